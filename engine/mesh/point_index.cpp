@@ -1,0 +1,76 @@
+#include "engine/mesh/point_index.hpp"
+
+#include <algorithm>
+#include <nanoflann.hpp>
+
+namespace tubemesh {
+
+namespace {
+
+// nanoflann 1.4 adaptor over three coordinate arrays.
+struct SoaCloud {
+    std::span<const double> x, y, z;
+    std::size_t kdtree_get_point_count() const { return x.size(); }
+    double kdtree_get_pt(std::size_t i, std::size_t dim) const { return dim == 0 ? x[i] : dim == 1 ? y[i] : z[i]; }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+        return false;
+    }
+};
+
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SoaCloud, double, index_t>,
+                                                 SoaCloud, 3, index_t>;
+
+bool closer(const Neighbor& a, const Neighbor& b) {
+    return a.distance_squared < b.distance_squared ||
+           (a.distance_squared == b.distance_squared && a.index < b.index);
+}
+
+}  // namespace
+
+struct PointIndex::Impl {
+    SoaCloud cloud;  // must outlive the tree, which keeps a reference to it
+    Tree tree;
+    Impl(std::span<const double> x, std::span<const double> y, std::span<const double> z)
+        : cloud{x, y, z}, tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
+        tree.buildIndex();
+    }
+};
+
+PointIndex::PointIndex(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    if (y.size() != x.size() || z.size() != x.size()) throw Error("PointIndex: coordinate arrays differ in length");
+    impl_ = std::make_unique<Impl>(x, y, z);
+}
+
+PointIndex::~PointIndex() = default;
+
+index_t PointIndex::size() const { return static_cast<index_t>(impl_->cloud.x.size()); }
+
+void PointIndex::nearest(const Vec3& query, index_t k, std::vector<Neighbor>& out) const {
+    out.clear();
+    if (k == 0 || size() == 0) return;
+    const double q[3] = {query.x, query.y, query.z};
+    // nanoflann's own order among equal distances depends on the tree layout: re-sort by
+    // (distance, index) so callers see one documented order.
+    const std::size_t want = std::min<std::size_t>(k, size());
+    std::vector<index_t> idx(want);
+    std::vector<double> d2(want);
+    const std::size_t found = impl_->tree.knnSearch(q, want, idx.data(), d2.data());
+    out.reserve(found);
+    for (std::size_t i = 0; i < found; ++i) out.push_back({idx[i], d2[i]});
+    std::sort(out.begin(), out.end(), closer);
+}
+
+void PointIndex::within(const Vec3& query, double radius, std::vector<Neighbor>& out) const {
+    out.clear();
+    if (!(radius > 0.0) || size() == 0) return;
+    const double q[3] = {query.x, query.y, query.z};
+    std::vector<std::pair<index_t, double>> hits;
+    nanoflann::SearchParams params(32, 0.0f, false);
+    impl_->tree.radiusSearch(q, radius * radius, hits, params);  // squared radius in 1.4
+    out.reserve(hits.size());
+    for (const auto& [i, d2] : hits) out.push_back({i, d2});
+    std::sort(out.begin(), out.end(), closer);
+}
+
+}  // namespace tubemesh

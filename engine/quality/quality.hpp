@@ -1,0 +1,54 @@
+#pragma once
+// Element quality measures (DESIGN.md, "Quality measures"), per element and per mesh.
+#include <array>
+#include <vector>
+
+#include "engine/mesh/hybrid_mesh.hpp"
+
+namespace tubemesh {
+
+// Tetrahedron collapse (paper, Table 1): at each vertex, the distance to the opposite face's
+// plane over the square root of that face's area; the minimum of the four divided by the
+// regular tet's value. 1 for a regular tet, 0 for a flat one, negative when inverted.
+double tet_collapse(const std::array<Vec3, 4>& p);
+
+// Hexahedron: scaled Jacobian J_m (minimum over the 8 corners of det(e1,e2,e3)/(|e1||e2||e3|))
+// and condition number (maximum over the corners of |A|·|A^-1|/3, Frobenius norms;
+// +infinity at a degenerate corner).
+struct HexQuality {
+    double scaled_jacobian;
+    double condition;
+};
+HexQuality hex_quality(const std::array<Vec3, 8>& p);
+
+// Pyramid: Verdict's pyramid scaled Jacobian (see quality.cpp for the formula).
+// 1 for the all-edges-equal pyramid, 0.891 for the paper's ideal apex, <= 0 when invalid.
+double pyramid_scaled_jacobian(const std::array<Vec3, 5>& p);
+
+// One measure over one element kind: count, min, mean, max and a 10-class histogram over
+// [lo, hi] (values below lo fall in class 0, above hi in class 9) as in the paper's Fig. 7.
+struct MeasureSummary {
+    index_t count = 0;
+    double min = 0, mean = 0, max = 0;
+    double lo = 0, hi = 1;
+    std::array<index_t, 10> histogram{};
+};
+
+struct QualitySummary {
+    MeasureSummary tet_collapse;            // classes over [0, 1]
+    MeasureSummary pyramid_jacobian;        // classes over [0, 1]
+    MeasureSummary hex_scaled_jacobian;     // classes over [0, 1]
+    MeasureSummary hex_condition;           // classes over [1, 4]
+};
+
+// The primary measure of every cell of one kind (tet collapse, pyramid scaled Jacobian,
+// hex scaled Jacobian), in cell order. Parallel over cells (oneTBB).
+std::vector<double> cell_quality(const HybridMesh& mesh, CellKind kind);
+
+// Hex condition numbers in cell order. Parallel over cells.
+std::vector<double> hex_condition_numbers(const HybridMesh& mesh);
+
+// All four summaries. Parallel over cells; the result does not depend on the thread count.
+QualitySummary summarize_quality(const HybridMesh& mesh);
+
+}  // namespace tubemesh

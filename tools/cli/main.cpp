@@ -1,0 +1,39 @@
+// The tubemesh command line. Each subcommand lives in its own file; this one wires them up and
+// turns errors into one line on stderr with exit code 2.
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <exception>
+
+#include "engine/core/types.hpp"
+#include "geom/occt_info.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"tubemesh: conforming hex/pyramid/tet meshes for solids with tubular holes"};
+    app.require_subcommand(0, 1);
+    bool version = false;
+    app.add_flag("--version", version, "Print the version and the library versions, then exit");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help exits 0; bad arguments are usage errors (exit 2, one line on stderr).
+        if (e.get_exit_code() == 0) return app.exit(e);
+        fmt::print(stderr, "tubemesh: {}\n", e.what());
+        return 2;
+    }
+    try {
+        if (version) {
+            fmt::print("tubemesh {} (OpenCASCADE {})\n", TUBEMESH_VERSION, tubemesh::geom::occt_version());
+            return 0;
+        }
+        fmt::print("{}", app.help());
+        return 0;
+    } catch (const tubemesh::Error& e) {
+        fmt::print(stderr, "tubemesh: {}\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "tubemesh: internal error: {}\n", e.what());
+        return 2;
+    }
+}

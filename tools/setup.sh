@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages tubemesh needs: build, tests, outside readers, benchmark peers.
+# Silent and fast when everything is present; `apt-get update` only when something is missing.
+set -euo pipefail
+
+packages=(
+  # build
+  build-essential cmake ninja-build ccache pkg-config
+  libocct-data-exchange-dev libtbb-dev libeigen3-dev libnanoflann-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev
+  # tests
+  libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
+  python3 python3-gmsh python3-meshio python3-numpy
+  # benchmark peers
+  gmsh tetgen valgrind
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+echo "setup: installing ${#missing[@]} missing package(s): ${missing[*]}" >&2
+sudo_cmd=()
+[[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq >/dev/null
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done" >&2

@@ -14,7 +14,8 @@ double tet_collapse(const std::array<Vec3, 4>& p);
 
 // Hexahedron: scaled Jacobian J_m (minimum over the 8 corners of det(e1,e2,e3)/(|e1||e2||e3|))
 // and condition number (maximum over the corners of |A|·|A^-1|/3, Frobenius norms;
-// +infinity at a degenerate corner).
+// +infinity at a corner whose Jacobian determinant is not positive: degenerate or inverted).
+// A = [e1 e2 e3], the edges from the corner, right-handed for a valid hex in VTK order.
 struct HexQuality {
     double scaled_jacobian;
     double condition;
@@ -22,11 +23,14 @@ struct HexQuality {
 HexQuality hex_quality(const std::array<Vec3, 8>& p);
 
 // Pyramid: Verdict's pyramid scaled Jacobian (see quality.cpp for the formula).
-// 1 for the all-edges-equal pyramid, 0.891 for the paper's ideal apex, <= 0 when invalid.
+// 1 for the all-edges-equal pyramid, 0.891 for the paper's ideal apex, 0 when flat and
+// negative when inverted (Verdict clamps to 0; the sign is kept here as for tets and hexes).
 double pyramid_scaled_jacobian(const std::array<Vec3, 5>& p);
 
 // One measure over one element kind: count, min, mean, max and a 10-class histogram over
 // [lo, hi] (values below lo fall in class 0, above hi in class 9) as in the paper's Fig. 7.
+// An empty kind has count 0 and min = mean = max = 0. One infinite hex condition number
+// makes the mean and max infinite: such a mesh is not fit for analysis.
 struct MeasureSummary {
     index_t count = 0;
     double min = 0, mean = 0, max = 0;

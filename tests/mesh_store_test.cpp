@@ -31,6 +31,10 @@ TEST(HybridMesh, AddsPointsCellsAndFacesAsFlatArrays) {
     EXPECT_EQ(m.face(FaceKind::Tri, 0)[1], 2u);
     EXPECT_EQ(m.point(3).y, 6.0);
     EXPECT_NO_THROW(m.validate_layout());
+    HybridMesh copy = m;
+    EXPECT_EQ(copy, m);
+    copy.block(CellKind::Tet).region[1] = pyr;
+    EXPECT_NE(copy, m);
 }
 
 TEST(HybridMesh, RejectsWrongNodeCount) {

@@ -23,12 +23,14 @@ struct Vec3 {
 struct CellBlock {
     std::vector<index_t> nodes;
     std::vector<index_t> region;  // index into HybridMesh::region_names
+    bool operator==(const CellBlock&) const = default;
 };
 
 // Boundary faces of one kind; a face's normal (right-hand rule) points out of the domain.
 struct FaceBlock {
     std::vector<index_t> nodes;
     std::vector<index_t> group;  // index into HybridMesh::surface_group_names
+    bool operator==(const FaceBlock&) const = default;
 };
 
 class HybridMesh {

@@ -4,20 +4,27 @@
 #include <fmt/core.h>
 
 #include <exception>
+#include <vector>
 
 #include "engine/core/types.hpp"
 #include "geom/occt_info.hpp"
+#include "tools/cli/commands.hpp"
 
 int main(int argc, char** argv) {
+    namespace cli = tubemesh::cli;
     CLI::App app{"tubemesh: conforming hex/pyramid/tet meshes for solids with tubular holes"};
     app.require_subcommand(0, 1);
     bool version = false;
     app.add_flag("--version", version, "Print the version and the library versions, then exit");
 
+    const std::vector<cli::Command> commands = {
+        cli::add_check_command(app),
+    };
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        // --help exits 0; bad arguments are usage errors (exit 2, one line on stderr).
+        // --help exits 0; bad arguments are usage errors: one line on stderr, exit 2.
         if (e.get_exit_code() == 0) return app.exit(e);
         fmt::print(stderr, "tubemesh: {}\n", e.what());
         return 2;
@@ -27,6 +34,8 @@ int main(int argc, char** argv) {
             fmt::print("tubemesh {} (OpenCASCADE {})\n", TUBEMESH_VERSION, tubemesh::geom::occt_version());
             return 0;
         }
+        for (const cli::Command& c : commands)
+            if (c.app->parsed()) return c.run();
         fmt::print("{}", app.help());
         return 0;
     } catch (const tubemesh::Error& e) {

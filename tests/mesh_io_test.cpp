@@ -1,0 +1,369 @@
+// Mesh files: exact MSH round trips, reading Gmsh-style input, errors, atomic writes, and
+// the Abaqus face mapping. Outside readers (Gmsh, meshio) are in mesh_io_readers_test.cpp,
+// the corruption fuzzing in mesh_io_fuzz_test.cpp.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "engine/io/abaqus_faces.hpp"
+#include "engine/io/abaqus_names.hpp"
+#include "engine/io/boundary_cell_faces.hpp"
+#include "engine/io/mesh_io.hpp"
+#include "engine/io/msh_reader.hpp"
+#include "tests/mesh_io_samples.hpp"
+#include "tests/support/process.hpp"
+#include "tests/support/sample_meshes.hpp"
+
+namespace tubemesh {
+namespace {
+
+using testing::TempDir;
+
+// The error message of f(), or "" when it does not throw tubemesh::Error.
+template <class F>
+std::string error_of(F&& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+HybridMesh round_trip(const HybridMesh& mesh, MshEncoding encoding) {
+    TempDir dir;
+    const auto path = dir / "mesh.msh";
+    write_msh(mesh, path, encoding);
+    return read_msh(path);
+}
+
+// ---------------------------------------------------------------- MSH round trips
+
+class MshRoundTrip : public ::testing::TestWithParam<MshEncoding> {};
+
+TEST_P(MshRoundTrip, ConformingPatchIsIdentical) {
+    const HybridMesh mesh = testing::conforming_patch();
+    EXPECT_EQ(testing::first_difference(round_trip(mesh, GetParam()), mesh), "");
+}
+
+TEST_P(MshRoundTrip, MixedGridIsIdentical) {
+    const HybridMesh mesh = testing::mixed_grid(6);
+    ASSERT_GT(mesh.cell_count(CellKind::Hex), 0u);
+    ASSERT_GT(mesh.cell_count(CellKind::Pyramid), 0u);
+    ASSERT_GT(mesh.cell_count(CellKind::Tet), 0u);
+    ASSERT_GT(mesh.face_count(FaceKind::Tri), 0u);
+    ASSERT_GT(mesh.face_count(FaceKind::Quad), 0u);
+    const HybridMesh back = round_trip(mesh, GetParam());
+    EXPECT_EQ(back.x, mesh.x);  // bit-exact coordinates, also through ASCII text
+    EXPECT_EQ(back.region_names, mesh.region_names);
+    EXPECT_EQ(back.surface_group_names, mesh.surface_group_names);
+    EXPECT_EQ(testing::first_difference(back, mesh), "");
+}
+
+TEST_P(MshRoundTrip, PointsWithoutCellsOrGroups) {
+    HybridMesh mesh;
+    mesh.add_point(1, 2, 3);
+    mesh.add_point(-0.1, 1e-300, 4e300);
+    EXPECT_EQ(testing::first_difference(round_trip(mesh, GetParam()), mesh), "");
+    EXPECT_EQ(testing::first_difference(round_trip(HybridMesh{}, GetParam()), HybridMesh{}), "");
+}
+
+TEST_P(MshRoundTrip, NamesWithSpacesAndUtf8) {
+    HybridMesh mesh = testing::conforming_patch();
+    mesh.region_names[0] = "hex ring (swept), Ø 0.04";
+    mesh.surface_group_names[1] = "";
+    EXPECT_EQ(testing::first_difference(round_trip(mesh, GetParam()), mesh), "");
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, MshRoundTrip, ::testing::Values(MshEncoding::Ascii, MshEncoding::Binary),
+                         [](const auto& info) { return info.param == MshEncoding::Ascii ? "Ascii" : "Binary"; });
+
+TEST(MshWriter, AsciiHeaderAndBinaryHeader) {
+    TempDir dir;
+    const HybridMesh mesh = testing::conforming_patch();
+    write_msh(mesh, dir / "a.msh", MshEncoding::Ascii);
+    write_msh(mesh, dir / "b.msh", MshEncoding::Binary);
+    const std::string a = testing::read_text(dir / "a.msh");
+    const std::string b = testing::read_text(dir / "b.msh");
+    EXPECT_EQ(a.rfind("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n2 1 \"hex_sides\"\n", 0), 0u);
+    EXPECT_EQ(b.rfind(std::string("$MeshFormat\n4.1 1 8\n\x01\0\0\0\n$EndMeshFormat\n", 40), 0), 0u);
+    EXPECT_TRUE(contains(a, "3 3 \"tets\"\n"));
+}
+
+TEST(MshWriter, NameGmshCannotHoldIsAnErrorAndLeavesNoFile) {
+    TempDir dir;
+    HybridMesh mesh = testing::conforming_patch();
+    mesh.region_names[1] = "say \"pyramids\"";
+    const std::string message = error_of([&] { write_msh(mesh, dir / "m.msh"); });
+    EXPECT_TRUE(contains(message, "double quote")) << message;
+    EXPECT_TRUE(contains(message, "m.msh")) << message;
+    EXPECT_EQ(testing::entry_count(dir.path()), 0);
+}
+
+TEST(MshWriter, InvalidLayoutIsAnError) {
+    TempDir dir;
+    HybridMesh mesh = testing::conforming_patch();
+    mesh.block(CellKind::Tet).nodes[0] = 99;
+    EXPECT_TRUE(contains(error_of([&] { write_msh(mesh, dir / "m.msh"); }), "refers to node 99"));
+    EXPECT_EQ(testing::entry_count(dir.path()), 0);
+}
+
+// ---------------------------------------------------------------- reading Gmsh-style files
+
+// What Gmsh writes and tubemesh does not: nodes over several entity blocks, parametric
+// coordinates, sparse unsorted tags, entities without physical groups, unnamed physical
+// groups, extra sections.
+constexpr const char* kGmshStyle = R"($MeshFormat
+4.1 0 8
+$EndMeshFormat
+$PhysicalNames
+1
+3 7 "solid"
+$EndPhysicalNames
+$Entities
+1 1 1 2
+5 0 0 0 0
+3 0 0 0 1 0 0 0 2 5 -5
+8 0 0 0 1 1 0 1 12 1 3
+1 0 0 0 1 1 1 1 7 0
+2 0 0 0 1 1 1 0 0
+$EndEntities
+$Nodes
+3 5 10 50
+0 5 0 1
+50
+0 0 1
+2 8 1 2
+30
+10
+1 0 0 0.5 0.5
+0 1 0 0.25 0.75
+3 1 0 2
+20
+40
+0 0 0
+1 1 1
+$EndNodes
+$Elements
+3 4 1 100
+3 1 4 1
+100 20 30 10 50
+3 2 4 1
+7 40 30 10 50
+2 8 2 2
+9 20 30 10
+8 20 10 50
+$EndElements
+$NodeData
+1
+"temperature"
+$EndNodeData
+)";
+
+TEST(MshReader, ReadsGmshStyleFile) {
+    TempDir dir;
+    testing::write_text(dir / "g.msh", kGmshStyle);
+    const HybridMesh m = read_msh(dir / "g.msh");
+    // Points by ascending tag: 10, 20, 30, 40, 50.
+    EXPECT_EQ(m.x, (std::vector<double>{0, 0, 1, 1, 0}));
+    EXPECT_EQ(m.y, (std::vector<double>{1, 0, 0, 1, 0}));
+    EXPECT_EQ(m.z, (std::vector<double>{0, 0, 0, 1, 1}));
+    // Tets by ascending tag: 7 (volume entity 2, no physical), then 100 (physical 7).
+    EXPECT_EQ(m.block(CellKind::Tet).nodes, (std::vector<index_t>{3, 2, 0, 4, 1, 2, 0, 4}));
+    EXPECT_EQ(m.region_names, (std::vector<std::string>{"solid", "volume_entity_2"}));
+    EXPECT_EQ(m.block(CellKind::Tet).region, (std::vector<index_t>{1, 0}));
+    // Triangles 8 then 9, on surface entity 8 with unnamed physical 12.
+    EXPECT_EQ(m.block(FaceKind::Tri).nodes, (std::vector<index_t>{1, 0, 4, 1, 2, 0}));
+    EXPECT_EQ(m.surface_group_names, (std::vector<std::string>{"surface_12"}));
+}
+
+TEST(MshReader, UnsupportedElementTypeIsAClearError) {
+    std::string text = kGmshStyle;
+    text.replace(text.find("2 8 2 2\n"), 8, "1 8 1 2\n");
+    const std::string message = error_of([&] { io::read_msh_bytes(text, "g.msh"); });
+    EXPECT_TRUE(contains(message, "g.msh: line 38: element type 1 (2-node line) is not supported")) << message;
+}
+
+TEST(MshReader, ErrorsNameTheLine) {
+    std::string text = kGmshStyle;
+    text.replace(text.find("0 1 0 0.25 0.75"), 15, "0 1 0 0.25 x.75");
+    const std::string message = error_of([&] { io::read_msh_bytes(text, "g.msh"); });
+    EXPECT_TRUE(contains(message, "g.msh: line 25: expected a parametric coordinate")) << message;
+}
+
+TEST(MshReader, UnknownNodeTagIsAnError) {
+    std::string text = kGmshStyle;
+    text.replace(text.find("9 20 30 10"), 10, "9 20 31 10");
+    const std::string message = error_of([&] { io::read_msh_bytes(text, "g.msh"); });
+    EXPECT_TRUE(contains(message, "line 39: element 9 refers to node tag 31")) << message;
+}
+
+TEST(MshReader, DuplicateElementTagIsAnError) {
+    std::string text = kGmshStyle;
+    text.replace(text.find("7 40 30"), 7, "100 40 30");
+    EXPECT_TRUE(contains(error_of([&] { io::read_msh_bytes(text, "g.msh"); }), "element tag 100 appears twice"));
+}
+
+TEST(MshReader, OtherVersionsAreRejected) {
+    const std::string message = error_of([] { io::read_msh_bytes("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n", "old.msh"); });
+    EXPECT_TRUE(contains(message, "old.msh: line 2: MSH version 2.2 is not supported")) << message;
+    EXPECT_TRUE(contains(error_of([] { io::read_msh_bytes("", "e.msh"); }), "the file is empty"));
+    EXPECT_TRUE(contains(error_of([] { io::read_msh_bytes("solid cube\n", "s.msh"); }), "not a Gmsh MSH file"));
+}
+
+TEST(MshReader, BinaryErrorsNameTheByteOffset) {
+    TempDir dir;
+    write_msh(testing::conforming_patch(), dir / "b.msh", MshEncoding::Binary);
+    std::string bytes = testing::read_text(dir / "b.msh");
+    const std::size_t nodes = bytes.find("$Nodes\n") + 7;
+    bytes.resize(nodes + 20);  // inside the $Nodes header
+    const std::string message = error_of([&] { io::read_msh_bytes(bytes, "b.msh"); });
+    EXPECT_TRUE(contains(message, "b.msh: byte offset " + std::to_string(nodes + 16) + ": the file ends inside"))
+        << message;
+}
+
+TEST(MshReader, MissingFileAndDirectoryAreErrors) {
+    TempDir dir;
+    const std::string missing = error_of([&] { read_msh(dir / "nothing.msh"); });
+    EXPECT_TRUE(contains(missing, "nothing.msh")) << missing;
+    EXPECT_TRUE(contains(missing, "No such file or directory")) << missing;
+    EXPECT_TRUE(contains(error_of([&] { read_msh(dir.path()); }), "Is a directory"));
+}
+
+// ---------------------------------------------------------------- atomic writes
+
+class AtomicWrite : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AtomicWrite, UnwritableDirectoryGivesErrorAndNoFile) {
+    TempDir dir;
+    testing::write_text(dir / "plain_file", "x");
+    const auto path = dir / "plain_file" / (std::string("mesh") + GetParam());
+    const std::string message = error_of([&] { write_mesh(testing::conforming_patch(), path); });
+    EXPECT_TRUE(contains(message, path.string())) << message;
+    EXPECT_TRUE(contains(message, "Not a directory")) << message;
+    EXPECT_EQ(testing::entry_count(dir.path()), 1);
+}
+
+TEST_P(AtomicWrite, FailedRenameRemovesTheTemporary) {
+    TempDir dir;
+    const auto path = dir / (std::string("mesh") + GetParam());
+    std::filesystem::create_directories(path / "occupied");  // a non-empty directory cannot be replaced
+    const std::string message = error_of([&] { write_mesh(testing::conforming_patch(), path); });
+    EXPECT_TRUE(contains(message, "cannot replace '" + path.string() + "'")) << message;
+    EXPECT_EQ(testing::entry_count(dir.path()), 1);
+}
+
+TEST_P(AtomicWrite, ReplacesAnExistingFile) {
+    TempDir dir;
+    const auto path = dir / (std::string("mesh") + GetParam());
+    testing::write_text(path, "old");
+    write_mesh(testing::conforming_patch(), path);
+    EXPECT_GT(std::filesystem::file_size(path), 100u);
+    EXPECT_EQ(testing::entry_count(dir.path()), 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, AtomicWrite, ::testing::Values(".msh", ".vtu", ".inp"),
+                         [](const auto& info) { return std::string(info.param + 1); });
+
+TEST(WriteMesh, UnknownExtensionIsAnError) {
+    TempDir dir;
+    const std::string message = error_of([&] { write_mesh(testing::conforming_patch(), dir / "mesh.stl"); });
+    EXPECT_TRUE(contains(message, "unknown mesh format '.stl'")) << message;
+    EXPECT_TRUE(contains(error_of([&] { write_mesh(testing::conforming_patch(), dir / "mesh"); }), "no extension"));
+    EXPECT_EQ(testing::entry_count(dir.path()), 0);
+}
+
+TEST(WriteMesh, ExtensionIsCaseInsensitive) {
+    TempDir dir;
+    write_mesh(testing::conforming_patch(), dir / "MESH.MSH");
+    EXPECT_EQ(testing::first_difference(read_msh(dir / "MESH.MSH"), testing::conforming_patch()), "");
+}
+
+// ---------------------------------------------------------------- VTU
+
+TEST(VtuWriter, HeaderCountsAndLegend) {
+    TempDir dir;
+    write_vtu(testing::conforming_patch(), dir / "m.vtu");
+    const std::string text = testing::read_text(dir / "m.vtu");
+    EXPECT_TRUE(contains(text, "header_type=\"UInt64\"")) << text;
+    EXPECT_TRUE(contains(text, "<Piece NumberOfPoints=\"13\" NumberOfCells=\"12\">"));
+    EXPECT_TRUE(contains(text, "region 1: \"pyramids\""));
+    for (const char* name : {"connectivity", "offsets", "types", "kind", "region", "quality"})
+        EXPECT_TRUE(contains(text, std::string("Name=\"") + name + "\"")) << name;
+    // One UInt8 per cell type: 8-byte header + 12 bytes = 20 bytes = 28 base64 characters.
+    // Tets (10) first, then the pyramid (14) and the hex (12).
+    EXPECT_TRUE(contains(text, "Name=\"types\" format=\"binary\">\n          DAAAAAAAAAAKCgoKCgoKCgoKDgw=\n"));
+}
+
+// ---------------------------------------------------------------- Abaqus
+
+TEST(AbaqusFaces, MappingOfTheTopologyTables) {
+    const int tet[4] = {3, 4, 2, 1};
+    for (int f = 0; f < 4; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Tet, f), tet[f]) << f;
+    for (int f = 0; f < 5; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Pyramid, f), f + 1) << f;
+    for (int f = 0; f < 6; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Hex, f), f + 1) << f;
+}
+
+// The Abaqus face named for each boundary face has exactly the boundary face's nodes.
+TEST(AbaqusFaces, BoundaryFacesMapToTheirCellFaces) {
+    const HybridMesh mesh = testing::mixed_grid(3);
+    const auto owners = io::boundary_cell_faces(mesh);
+    for (FaceKind fk : {FaceKind::Tri, FaceKind::Quad})
+        for (index_t f = 0; f < mesh.face_count(fk); ++f) {
+            const io::CellFaceRef ref = owners[static_cast<int>(fk)][f];
+            ASSERT_NE(ref.cell, kNoIndex);
+            const int s = io::abaqus_face_number(ref.kind, ref.local_face);
+            const io::AbaqusFace af = ref.kind == CellKind::Tet       ? io::kAbaqusTetFaces[s - 1]
+                                      : ref.kind == CellKind::Pyramid ? io::kAbaqusPyramidFaces[s - 1]
+                                                                      : io::kAbaqusHexFaces[s - 1];
+            const auto cell = mesh.cell(ref.kind, ref.cell);
+            std::vector<index_t> abaqus_nodes, face_nodes(mesh.face(fk, f).begin(), mesh.face(fk, f).end());
+            for (int k = 0; k < af.size; ++k) abaqus_nodes.push_back(cell[af.node[k] - 1]);
+            std::sort(abaqus_nodes.begin(), abaqus_nodes.end());
+            std::sort(face_nodes.begin(), face_nodes.end());
+            EXPECT_EQ(abaqus_nodes, face_nodes);
+        }
+}
+
+TEST(InpWriter, SetsAndSurfacesOfThePatch) {
+    TempDir dir;
+    write_inp(testing::conforming_patch(), dir / "m.inp");
+    const std::string text = testing::read_text(dir / "m.inp");
+    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D4, ELSET=KIND_C3D4\n1, ")) << text;
+    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D5, ELSET=KIND_C3D5\n11, 5, 6, 7, 8, 13\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D8, ELSET=KIND_C3D8\n12, 1, 2, 3, 4, 5, 6, 7, 8\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELSET, ELSET=pyramids\n11\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELSET, ELSET=tets\n1, 2, 3, 4, 5, 6, 7, 8, 9, 10\n")) << text;
+    // The hex's five boundary quads: bottom and the four sides, faces S1 and S3..S6.
+    EXPECT_TRUE(contains(text, "*SURFACE, NAME=hex_sides, TYPE=ELEMENT\n12, S1\n12, S3\n12, S4\n12, S5\n12, S6\n"))
+        << text;
+    EXPECT_TRUE(contains(text, "*NSET, NSET=hex_sides\n1, 2, 3, 4, 5, 6, 7, 8\n")) << text;
+}
+
+TEST(InpWriter, FaceOfNoCellIsAnErrorAndLeavesNoFile) {
+    TempDir dir;
+    HybridMesh mesh = testing::conforming_patch();
+    const std::array<index_t, 3> stray{0, 1, 12};
+    mesh.add_face(FaceKind::Tri, stray, 0);
+    const std::string message = error_of([&] { write_inp(mesh, dir / "m.inp"); });
+    EXPECT_TRUE(contains(message, "boundary triangle 10 (surface group \"hex_sides\") is not a face of any cell"))
+        << message;
+    EXPECT_EQ(testing::entry_count(dir.path()), 0);
+}
+
+TEST(AbaqusLabels, ValidDistinctLabels) {
+    io::AbaqusLabels labels;
+    EXPECT_EQ(labels.label("hex_ring"), "hex_ring");
+    EXPECT_EQ(labels.label("HEX_RING"), "HEX_RING_2");  // Abaqus ignores case
+    EXPECT_EQ(labels.label("pipe 1, inner"), "pipe_1__inner");
+    EXPECT_EQ(labels.label("3rd face"), "G_3rd_face");
+    EXPECT_EQ(labels.label(""), "G_");
+    EXPECT_EQ(labels.label(std::string(100, 'a')).size(), 80u);
+    EXPECT_EQ(labels.label(std::string(100, 'a')), std::string(78, 'a') + "_2");
+}
+
+}  // namespace
+}  // namespace tubemesh

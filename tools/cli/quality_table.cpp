@@ -1,0 +1,53 @@
+#include "tools/cli/quality_table.hpp"
+
+#include <fmt/format.h>
+
+namespace tubemesh::cli {
+
+namespace {
+
+void add_measure_rows(std::string& out, const char* kind, const char* measure, const MeasureSummary& m,
+                      bool with_count) {
+    if (with_count) out += fmt::format("{:<18} {:<14} {:>12}\n", kind, "Num. element", m.count);
+    if (m.count == 0) return;
+    out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Min. {}", measure), m.min);
+    out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Avg. {}", measure), m.mean);
+    out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Max. {}", measure), m.max);
+}
+
+std::string histogram_line(const char* label, const MeasureSummary& m) {
+    std::string line = fmt::format("{:<22}", label);
+    for (index_t c : m.histogram) line += fmt::format(" {:>7}", c);
+    return line + "\n";
+}
+
+nlohmann::json measure_json(const MeasureSummary& m) {
+    return {{"count", m.count}, {"min", m.min},   {"mean", m.mean},
+            {"max", m.max},     {"classes_lo", m.lo}, {"classes_hi", m.hi}, {"histogram", m.histogram}};
+}
+
+}  // namespace
+
+std::string format_quality_table(const QualitySummary& q, index_t nodes) {
+    std::string out;
+    add_measure_rows(out, "Tetrahedral mesh", "metric", q.tet_collapse, true);
+    add_measure_rows(out, "Pyramidal mesh", "metric", q.pyramid_jacobian, true);
+    add_measure_rows(out, "Hexahedral mesh", "J_m", q.hex_scaled_jacobian, true);
+    add_measure_rows(out, "", "Cond", q.hex_condition, false);
+    out += fmt::format("{:<18} {:<14} {:>12}\n", "Nodes", "", nodes);
+    out += "\nShape metric classes (10 equal classes; Cond over [1, 4]):\n";
+    if (q.tet_collapse.count) out += histogram_line("tet collapse", q.tet_collapse);
+    if (q.pyramid_jacobian.count) out += histogram_line("pyramid scaled Jac.", q.pyramid_jacobian);
+    if (q.hex_scaled_jacobian.count) out += histogram_line("hex J_m", q.hex_scaled_jacobian);
+    if (q.hex_condition.count) out += histogram_line("hex Cond", q.hex_condition);
+    return out;
+}
+
+nlohmann::json quality_json(const QualitySummary& q) {
+    return {{"tet_collapse", measure_json(q.tet_collapse)},
+            {"pyramid_scaled_jacobian", measure_json(q.pyramid_jacobian)},
+            {"hex_scaled_jacobian", measure_json(q.hex_scaled_jacobian)},
+            {"hex_condition", measure_json(q.hex_condition)}};
+}
+
+}  // namespace tubemesh::cli

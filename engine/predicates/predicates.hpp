@@ -1,11 +1,18 @@
 #pragma once
 // The one geometric predicates module of tubemesh: exact signs of orient3d and insphere
-// (floating-point filter, exact expansion arithmetic as fallback), symbolic perturbation for
-// ties, and segment/triangle and triangle/triangle intersection built on them.
-// Compiled in its own target with -ffp-contract=off: a fused multiply-add would change the
-// rounding the filters' error bounds are derived for.
+// (floating-point filter, then exact integer or expansion arithmetic), symbolic perturbation
+// for ties, and segment/triangle and triangle/triangle intersection built on them.
+// Compiled in its own target with -ffp-contract=off: a contracted multiply-add would break the
+// error-free transformations of the expansion arithmetic (expansion.hpp). The filters' error
+// bounds survive contraction (filters.hpp), which is why predicates_inline.hpp may inline them.
 //
 // Points are `const double*` to 3 coordinates, so callers can pass SoA-gathered or AoS data.
+// Every result is exact for any finite coordinates (tiny, huge and subnormal included); for NaN
+// or infinite coordinates the result is unspecified.
+//
+// orient3d and insphere cost a few ns when the filter decides, as it does for points in general
+// position; exact ties and near-ties cost tens to a few hundred ns (exact.hpp).
+// predicates_inline.hpp has the same two with the filter inlined, for inner loops.
 #include <cstdint>
 
 namespace tubemesh::predicates {
@@ -18,10 +25,15 @@ int orient3d(const double* a, const double* b, const double* c, const double* d)
 // -1 outside, 0 on it. For a negatively oriented tet the sign flips.
 int insphere(const double* a, const double* b, const double* c, const double* d, const double* e);
 
-// Symbolically perturbed versions (Simulation of Simplicity, perturbation ordered by the
-// caller's global point indices): never 0 for distinct indices and distinct points, and
-// consistent across calls, so co-planar and co-spherical ties are decided the same way
-// everywhere. Only orient3d of four identical-position points can still return 0.
+// Symbolically perturbed versions (Simulation of Simplicity, sos.cpp): the exact sign when it
+// is not 0, else the sign after perturbing the points infinitesimally, by amounts ordered by the
+// caller's global point indices (the largest index moves most). Both use one perturbation of
+// one point set, so co-planar and co-spherical ties are decided the same way everywhere and a
+// Delaunay triangulation built from them is consistent. For insphere, lifting is perturbed
+// before position: a tie with a tet that is not flat is decided by the orient3d of the four
+// points other than the one with the largest index (then the next largest, ...), as in Geogram
+// and CGAL. Never 0 for pairwise distinct indices, even for coincident points. With a repeated
+// index the result is the unperturbed sign, which may be 0.
 int orient3d_sos(const double* a, const double* b, const double* c, const double* d, std::uint32_t ia,
                  std::uint32_t ib, std::uint32_t ic, std::uint32_t id);
 int insphere_sos(const double* a, const double* b, const double* c, const double* d, const double* e,
@@ -34,6 +46,10 @@ enum class Contact : std::uint8_t {
                // on the triangle, collinear/coplanar overlap)
     Crossing,  // the relative interiors cross
 };
+// Coplanar configurations are at most Touching, even when the relative interiors overlap, and
+// so is any contact with a degenerate (collinear) triangle or segment, which has no interior.
+// Crossing therefore means a transversal crossing: the segment's interior passes through the
+// triangle's interior, or the two triangles' interiors cut each other along a segment.
 
 // Segment pq against triangle abc.
 Contact segment_triangle(const double* p, const double* q, const double* a, const double* b, const double* c);

@@ -11,6 +11,8 @@ struct Command {
     std::function<int()> run;
 };
 
-Command add_check_command(CLI::App& app);
+Command add_check_command(CLI::App& app);       // tubemesh check MESH
+Command add_inspect_command(CLI::App& app);     // tubemesh inspect CAD
+Command add_make_block_command(CLI::App& app);  // tubemesh make-block --preset|--seed|--spec -o OUT
 
 }  // namespace tubemesh::cli

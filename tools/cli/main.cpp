@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
 
     const std::vector<cli::Command> commands = {
         cli::add_check_command(app),
+        cli::add_inspect_command(app),
+        cli::add_make_block_command(app),
     };
 
     try {

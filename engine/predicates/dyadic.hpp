@@ -1,0 +1,52 @@
+#pragma once
+// A finite double as an exact dyadic m * 2^e, read from its bits (frexp/ldexp are library
+// calls, and this runs a dozen times per exact predicate).
+#include <bit>
+#include <cstdint>
+
+namespace tubemesh::predicates::detail {
+
+// x = m * 2^e with m odd (or m = 0, e = 0), |m| < 2^53. `top` is the exponent of the highest
+// set bit of |x|, so every bit of x lies in [e, top].
+struct Dyadic {
+    std::int64_t m = 0;
+    int e = 0;
+    int top = 0;
+};
+
+// x must be finite.
+inline Dyadic dyadic(double x) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    const int biased = static_cast<int>((bits >> 52) & 0x7FF);
+    std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
+    if (biased != 0) mantissa |= std::uint64_t{1} << 52;  // normal: implicit leading bit
+    if (mantissa == 0) return {};
+    int e = (biased == 0 ? 1 : biased) - 1075;  // value = mantissa * 2^e
+    const int zeros = std::countr_zero(mantissa);
+    mantissa >>= zeros;
+    e += zeros;
+    const int top = e + 63 - std::countl_zero(mantissa);
+    const auto m = static_cast<std::int64_t>(mantissa);
+    return {(bits >> 63) != 0 ? -m : m, e, top};
+}
+
+// The finite values v[0..n) as integers on one power-of-two scale, if all fit below 2^bits in
+// magnitude (bits <= 62); false otherwise. The scale is positive, so signs of determinants of
+// these integers are the signs for the doubles.
+inline bool to_common_integers(const double* v, int n, int bits, std::int64_t* out) {
+    Dyadic d[16];
+    int emin = 0, top = 0;
+    bool any = false;
+    for (int i = 0; i < n; ++i) {
+        d[i] = dyadic(v[i]);
+        if (d[i].m == 0) continue;
+        emin = any && emin < d[i].e ? emin : d[i].e;
+        top = any && top > d[i].top ? top : d[i].top;
+        any = true;
+    }
+    if (any && top - emin + 1 > bits) return false;  // |v| < 2^(top + 1), so |v| 2^-emin < 2^(top - emin + 1)
+    for (int i = 0; i < n; ++i) out[i] = d[i].m == 0 ? 0 : d[i].m * (std::int64_t{1} << (d[i].e - emin));
+    return true;
+}
+
+}  // namespace tubemesh::predicates::detail

@@ -1,0 +1,91 @@
+#pragma once
+// Semi-static floating-point filters for orient3d and insphere: the determinant in plain doubles
+// and an a-priori bound on its rounding error from the largest coordinate differences. They
+// return +1 or -1 when the sign is certain, 0 when the exact code must decide.
+//
+// Error bounds. u = 2^-53. With the standard model fl(x op y) = (x op y)(1 + d), |d| <= u, the
+// computed determinant is a sum of monomials in the exact coordinate differences, each
+// multiplied by at most n factors (1 + d_i); so its error is at most gamma_n * P, gamma_n =
+// nu / (1 - nu), P = the sum of the monomials' absolute values. n counts the roundings on the
+// longest path from an input difference to the result; P is bounded by the maxima mx, my, mz
+// of the absolute differences in each coordinate (computed differences are within a factor
+// (1 - u) of the exact ones).
+//   orient3d: n = 8 (3 differences, product and difference in a 2x2 minor, product, 2 sums),
+//     P <= 6 mx my mz: error <= 48u (1 + 15u) mx my mz including the rounding of the bound's
+//     own three products. kOrient3dBound = 49u.
+//   insphere: n = 16 (5 differences, 2 in the 2x2 minor, 3 in the 3x3 minor, 3 in the lifted
+//     coordinate, 1 product, 2 final sums), P <= 4 rows * 3 squares * 6 = 72 m^2 mx my mz with
+//     m = max(mx, my, mz): error <= 1152u (1 + 26u) m^2 mx my mz. kInsphereBound = 1153u.
+// The spare u (about 1/50 and 1/1150 of the bound) also absorbs what the model above leaves out,
+// the absolute error (at most 2^-1075 each) of products that fall in the subnormal range. That
+// is why the filters only decide when every maximum lies in a window: above it something could
+// overflow (orient3d: 6 m^3 < 2^1023; insphere: 72 m^5 < 2^1023), below it the subnormal errors
+// could exceed the spare u. Outside the window, or for NaN, the filter abstains.
+//
+// Contraction: a fused multiply-add only removes a rounding from a path, so these bounds stay
+// valid when a caller's flags let the compiler contract; that is what makes it safe to inline
+// them into code built without -ffp-contract=off (predicates_inline.hpp). Reassociation is not
+// safe, hence the -ffast-math check.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#if defined(__FAST_MATH__)
+#error "tubemesh predicates: the floating-point filters are not valid under -ffast-math"
+#endif
+
+namespace tubemesh::predicates::detail {
+
+static_assert(FLT_EVAL_METHOD == 0, "the filters' error bounds assume plain double evaluation");
+
+inline constexpr double kOrient3dBound = 49.0 * 0x1p-53;
+inline constexpr double kOrient3dMin = 0x1p-330, kOrient3dMax = 0x1p330;
+inline constexpr double kInsphereBound = 1153.0 * 0x1p-53;
+inline constexpr double kInsphereMin = 0x1p-200, kInsphereMax = 0x1p200;
+
+// +1 or -1 when |det| > bound, else 0 (also for NaN). Branch-free: the sign of random input is
+// a coin toss, and a mispredicted branch costs as much as the whole filter.
+inline int decided_sign(double det, double bound) { return int(det > bound) - int(det < -bound); }
+
+inline double max3(double a, double b, double c) { return std::max(a, std::max(b, c)); }
+inline double min3(double a, double b, double c) { return std::min(a, std::min(b, c)); }
+inline double abs_max3(double a, double b, double c) { return max3(std::fabs(a), std::fabs(b), std::fabs(c)); }
+
+// Sign of det[b-a, c-a, d-a] when certain, else 0.
+inline int orient3d_filter(const double* a, const double* b, const double* c, const double* d) {
+    const double px = b[0] - a[0], py = b[1] - a[1], pz = b[2] - a[2];
+    const double qx = c[0] - a[0], qy = c[1] - a[1], qz = c[2] - a[2];
+    const double rx = d[0] - a[0], ry = d[1] - a[1], rz = d[2] - a[2];
+    // Expansion along z; the 2x2 minors are in x and y.
+    const double det = (pz * (qx * ry - rx * qy) - qz * (px * ry - rx * py)) + rz * (px * qy - qx * py);
+    const double mx = abs_max3(px, qx, rx), my = abs_max3(py, qy, ry), mz = abs_max3(pz, qz, rz);
+    if (!(min3(mx, my, mz) >= kOrient3dMin && max3(mx, my, mz) <= kOrient3dMax)) return 0;
+    const double bound = kOrient3dBound * ((mx * my) * mz);
+    return decided_sign(det, bound);
+}
+
+// Sign of the insphere determinant (see insphere.cpp) when certain, else 0.
+inline int insphere_filter(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+    const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+    const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+    const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+    const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
+    const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
+    const double bcd = (bz * cd - cz * bd) + dz * bc;
+    const double acd = (az * cd - cz * ad) + dz * ac;
+    const double abd = (az * bd - bz * ad) + dz * ab;
+    const double abc = (az * bc - bz * ac) + cz * ab;
+    const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
+    const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
+    const double det = (la * bcd - lb * acd) + (lc * abd - ld * abc);
+    const double mx = std::max(abs_max3(ax, bx, cx), std::fabs(dx));
+    const double my = std::max(abs_max3(ay, by, cy), std::fabs(dy));
+    const double mz = std::max(abs_max3(az, bz, cz), std::fabs(dz));
+    const double m = max3(mx, my, mz);
+    if (!(min3(mx, my, mz) >= kInsphereMin && m <= kInsphereMax)) return 0;
+    const double bound = kInsphereBound * ((m * m) * ((mx * my) * mz));
+    return decided_sign(det, bound);
+}
+
+}  // namespace tubemesh::predicates::detail

@@ -1,0 +1,26 @@
+#pragma once
+// orient3d and insphere with the floating-point filter inlined into the caller, for inner loops
+// (Delaunay insertion, cavity search). Same results as predicates.hpp's orient3d and insphere:
+// only the exact fallback is a call. Safe in code compiled without -ffp-contract=off (see the
+// contraction note in filters.hpp); refuses to compile under -ffast-math.
+#include "engine/predicates/filters.hpp"
+#include "engine/predicates/predicates.hpp"
+
+namespace tubemesh::predicates {
+
+namespace detail {
+int orient3d_exact(const double* a, const double* b, const double* c, const double* d);
+int insphere_exact(const double* a, const double* b, const double* c, const double* d, const double* e);
+}  // namespace detail
+
+inline int orient3d_inline(const double* a, const double* b, const double* c, const double* d) {
+    const int s = detail::orient3d_filter(a, b, c, d);
+    return s != 0 ? s : detail::orient3d_exact(a, b, c, d);
+}
+
+inline int insphere_inline(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    const int s = detail::insphere_filter(a, b, c, d, e);
+    return s != 0 ? s : detail::insphere_exact(a, b, c, d, e);
+}
+
+}  // namespace tubemesh::predicates

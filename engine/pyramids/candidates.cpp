@@ -1,0 +1,55 @@
+#include "engine/pyramids/candidates.hpp"
+
+#include <cmath>
+
+#include "engine/pyramids/criteria.hpp"
+
+namespace tubemesh::pyramids {
+
+namespace {
+
+// Judges one candidate and counts the verdict; fills `choice` when accepted and keeps the
+// refusal of a new node for the error message when none is.
+bool try_candidate(const Front& f, const Candidate& c, const Thresholds& t, std::uint8_t how, const Visible& vis,
+                   const FrontState& state, Tally& tally, Choice& choice) {
+    const Verdict v = judge(f, c, t, vis, state);
+    if (c.id == kNoIndex) choice.refusal = v;
+    ++tally.verdicts[static_cast<int>(v)];
+    if (v != Verdict::Accepted) return false;
+    choice = {true, c.id, c.p, how, Verdict::Accepted};
+    return true;
+}
+
+bool try_existing(const Front& f, const Thresholds& t, std::uint8_t how, const Visible& vis, const FrontState& state,
+                  Tally& tally, Choice& choice) {
+    for (const NearNode& n : vis.candidates)
+        if (try_candidate(f, {n.id, n.p}, t, how, vis, state, tally, choice)) return true;
+    return false;
+}
+
+}  // namespace
+
+Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOptions& opt, Visible& vis,
+                   Tally& tally) {
+    const Front& f = world.fronts[front];
+    gather_visible(world, front, vis);
+    Choice choice;
+    if (pass == Pass::Normal) {
+        const Thresholds t = Thresholds::at(f, opt, 1.0);
+        if (try_candidate(f, {kNoIndex, f.ideal}, t, kHowIdeal, vis, world.state, tally, choice)) return choice;
+        try_existing(f, t, kHowExisting, vis, world.state, tally, choice);
+        return choice;
+    }
+    for (int step = 0; step < opt.try_nodes; ++step) {
+        const int k = pass == Pass::Relaxed ? step + 1 : opt.try_nodes - step;
+        const double rate = std::pow(opt.relax_rate, k);
+        const Thresholds t = Thresholds::at(f, opt, rate);
+        const Vec3 node = f.centroid + (opt.height_factor * f.h * rate) * f.normal;
+        const auto how = static_cast<std::uint8_t>(kHowTryBase + k - 1);
+        if (try_candidate(f, {kNoIndex, node}, t, how, vis, world.state, tally, choice)) return choice;
+        if (try_existing(f, t, kHowExistingRelaxed, vis, world.state, tally, choice)) return choice;
+    }
+    return choice;
+}
+
+}  // namespace tubemesh::pyramids

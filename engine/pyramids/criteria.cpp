@@ -1,0 +1,238 @@
+#include "engine/pyramids/criteria.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "engine/predicates/predicates.hpp"
+#include "engine/pyramids/contacts.hpp"
+#include "engine/pyramids/front_link.hpp"
+#include "engine/pyramids/new_pyramid.hpp"
+#include "engine/quality/quality.hpp"
+
+namespace tubemesh::pyramids {
+
+namespace {
+
+using P3 = std::array<double, 3>;
+
+P3 raw(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+int orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const P3 pa = raw(a), pb = raw(b), pc = raw(c), pd = raw(d);
+    return predicates::orient3d(pa.data(), pb.data(), pc.data(), pd.data());
+}
+
+// The triangles a visible face is judged as: (0,1,2) and, for a quad, (0,2,3).
+template <class F>
+bool any_triangle(const VisibleFace& face, F&& f) {
+    if (f(std::array<index_t, 3>{face.node[0], face.node[1], face.node[2]},
+          std::array<const Vec3*, 3>{&face.p[0], &face.p[1], &face.p[2]}))
+        return true;
+    return face.size == 4 && f(std::array<index_t, 3>{face.node[0], face.node[2], face.node[3]},
+                               std::array<const Vec3*, 3>{&face.p[0], &face.p[2], &face.p[3]});
+}
+
+double face_distance2(const VisibleFace& face, const Vec3& p) {
+    double d2 = point_triangle_distance2(p, face.p[0], face.p[1], face.p[2]);
+    if (face.size == 4) d2 = std::min(d2, point_triangle_distance2(p, face.p[0], face.p[2], face.p[3]));
+    return d2;
+}
+
+// x strictly inside the pyramid: strictly inside its four lateral faces (each oriented out of
+// the pyramid, so the inside is where orient3d is negative) and strictly above its base. Not
+// "inside one of its sub-tets": a point on the plane of a base diagonal, the pyramid's axis
+// for one, is inside no sub-tet strictly. A non-planar base is taken at its highest: above
+// any of the four triangles its two diagonals make, which can only refuse more.
+bool inside_pyramid(const NewPyramid& y, const Vec3& x) {
+    const auto& p = y.p;
+    for (int f = 0; f < 4; ++f)
+        if (orient(p[f], p[(f + 1) % 4], p[4], x) >= 0) return false;
+    return orient(p[0], p[1], p[2], x) > 0 || orient(p[0], p[2], p[3], x) > 0 || orient(p[0], p[1], p[3], x) > 0 ||
+           orient(p[1], p[2], p[3], x) > 0;
+}
+
+bool has_edge(const Visible& vis, index_t u, index_t v) {
+    const index_t a = std::min(u, v), b = std::max(u, v);
+    return std::binary_search(
+        vis.edges.begin(), vis.edges.end(), VisibleEdge{a, b, {}, {}, {}},
+        [](const VisibleEdge& l, const VisibleEdge& r) { return l.a < r.a || (l.a == r.a && l.b < r.b); });
+}
+
+// Existing faces and edges the candidate would reuse (only an existing node can). A repeated
+// face must be the opposite face of a neighbour; then the two pyramids share it.
+bool match_existing(NewPyramid& y, const Visible& vis, const FrontState& state) {
+    const index_t apex = y.node[4];
+    if (apex == kNoIndex) return true;
+    for (int f = 0; f < 4; ++f) {
+        const Triangle t{y.node[f], y.node[(f + 1) % 4], apex};
+        const index_t owner = state.find(t);
+        if (owner == kNoIndex) continue;
+        if (same_orientation(state.triangle(owner), t)) return false;
+        y.face_new[f] = false;
+    }
+    for (int k = 0; k < 4; ++k) y.edge_new[k] = !has_edge(vis, y.node[k], apex);
+    return true;
+}
+
+bool too_close_to_face(const NewPyramid& y, const Visible& vis, double d2min) {
+    const Vec3& apex = y.p[4];
+    for (const VisibleFace& face : vis.faces) {
+        if (y.node[4] != kNoIndex && face.has(y.node[4])) continue;
+        if (box_distance2(face.box, apex) >= d2min) continue;
+        if (face_distance2(face, apex) < d2min) return true;
+    }
+    return false;
+}
+
+bool contains_node(const NewPyramid& y, const Visible& vis) {
+    for (const NearNode& n : vis.nodes) {
+        if (y.has(n.id) || box_distance2(y.box, n.p) > 0) continue;
+        if (inside_pyramid(y, n.p)) return true;
+    }
+    return false;
+}
+
+// Edges of the front faces around an existing candidate node P (its fan), as pair keys.
+// At most kFanEdges: the rest of a larger fan is not skipped, which only makes the check
+// stricter.
+constexpr int kFanEdges = 96;
+struct ApexFan {
+    int count = 0;
+    std::array<std::uint64_t, kFanEdges> key;
+    static std::uint64_t of(index_t a, index_t b) {
+        return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+    }
+    bool has(index_t a, index_t b) const {
+        const std::uint64_t k = of(a, b);
+        for (int i = 0; i < count; ++i)
+            if (key[i] == k) return true;
+        return false;
+    }
+};
+
+void collect_fan(index_t apex, const Visible& vis, ApexFan& fan) {
+    if (apex == kNoIndex) return;
+    for (const VisibleFace& face : vis.faces) {
+        if (!face.has(apex)) continue;
+        for (int k = 0; k < face.size; ++k) {
+            if (fan.count == kFanEdges) return;
+            fan.key[fan.count++] = ApexFan::of(face.node[k], face.node[(k + 1) % face.size]);
+        }
+    }
+}
+
+// "The distance between the new edges and visible edges": a new edge X-P fails where it
+// comes nearer to a front edge than the threshold and than its base corner X already is.
+// Not measured: edges that touch the base's immediate neighbourhood (an end is a node of a
+// front face at a base corner) or the fan of an existing apex. A new edge leaves the base
+// corner X across those faces, so its nearness to such edges is the angle it makes with
+// them — which the apex-to-face distance already bounds — times the size of the input's
+// triangles there; no apex position can change the latter. A host face, for one, lies a
+// fixed half axial step below the end pyramids of a ring whatever their apex, and its
+// triangles next to the ring run under their lateral faces.
+bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
+    const index_t apex = y.node[4];
+    ApexFan fan;
+    collect_fan(apex, vis, fan);
+    for (int k = 0; k < 4; ++k) {
+        if (!y.edge_new[k]) continue;
+        const Vec3& x = y.p[k];
+        Box ebox = Box::of(x);
+        ebox.add(y.p[4]);
+        for (const VisibleEdge& e : vis.edges) {
+            if (e.near_base) continue;
+            if (apex != kNoIndex && (e.a == apex || e.b == apex)) continue;
+            if (box_distance2(ebox, e.box) >= d2min) continue;
+            const double d2 = segment_segment_distance2(x, y.p[4], e.pa, e.pb);
+            if (d2 >= d2min) continue;
+            // Relative slack: when the nearest point is X itself the two computations agree
+            // up to rounding.
+            if (!(d2 < segment_segment_distance2(x, x, e.pa, e.pb) * (1.0 - 1e-9))) continue;
+            if (fan.count > 0 && fan.has(e.a, e.b)) continue;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool edge_crosses_face(const NewPyramid& y, const Visible& vis) {
+    for (int k = 0; k < 4; ++k) {
+        if (!y.edge_new[k]) continue;
+        Box ebox = Box::of(y.p[k]);
+        ebox.add(y.p[4]);
+        const index_t a = y.node[k], b = y.node[4];
+        for (const VisibleFace& face : vis.faces) {
+            if (face.role == FaceRole::Own || !face.box.overlaps(ebox)) continue;
+            // Both ends on a quad that has no such edge: the new edge is its diagonal.
+            if (face.size == 4 && face.has(a) && b != kNoIndex && face.has(b)) return true;
+            if (any_triangle(face, [&](const std::array<index_t, 3>& it, const std::array<const Vec3*, 3>& t) {
+                    return improper_contact(a, y.p[k], b, y.p[4], it, t, y);
+                }))
+                return true;
+        }
+    }
+    return false;
+}
+
+bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
+    for (int f = 0; f < 4; ++f) {
+        if (!y.face_new[f]) continue;
+        const int g = (f + 1) % 4;
+        const std::array<index_t, 3> it{y.node[f], y.node[g], y.node[4]};
+        const std::array<const Vec3*, 3> t{&y.p[f], &y.p[g], &y.p[4]};
+        Box tbox = Box::of(y.p[f]);
+        tbox.add(y.p[g]);
+        tbox.add(y.p[4]);
+        for (const VisibleEdge& e : vis.edges) {
+            if (!e.box.overlaps(tbox)) continue;
+            if (improper_contact(e.a, e.pa, e.b, e.pb, it, t, y)) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+Thresholds Thresholds::at(const Front& f, const PyramidOptions& opt, double rate) {
+    Thresholds t;
+    const double degrees = opt.max_angle_degrees / rate;
+    t.cos_max_angle = degrees >= 90.0 ? 0.0 : std::cos(degrees * std::numbers::pi / 180.0);
+    const double d = opt.distance_factor * f.h * rate;
+    t.min_distance2 = d * d;
+    return t;
+}
+
+Verdict judge(const Front& f, const Candidate& c, const Thresholds& t, const Visible& vis, const FrontState& state) {
+    const Vec3 mp = c.p - f.centroid;
+    const double length = norm(mp);
+    if (!(length > 0) || !(dot(mp, f.normal) > t.cos_max_angle * length)) return Verdict::AngleTooLarge;
+
+    NewPyramid y;
+    for (int k = 0; k < 4; ++k) {
+        y.node[k] = f.node[k];
+        y.p[k] = f.corner[k];
+    }
+    y.node[4] = c.id;
+    y.p[4] = c.p;
+    const auto& p = y.p;
+    if (orient(p[0], p[1], p[2], p[4]) <= 0 || orient(p[0], p[2], p[3], p[4]) <= 0 ||
+        orient(p[0], p[1], p[3], p[4]) <= 0 || orient(p[1], p[2], p[3], p[4]) <= 0)
+        return Verdict::NotPositive;
+    if (f.quality_floor > 0 && pyramid_scaled_jacobian({p[0], p[1], p[2], p[3], p[4]}) < f.quality_floor)
+        return Verdict::LowQuality;
+    if (!match_existing(y, vis, state)) return Verdict::FaceMismatch;
+    if (!keeps_front_manifold(y, vis)) return Verdict::PinchesFront;
+
+    y.box = Box::of(p[0]);
+    for (int k = 1; k < 5; ++k) y.box.add(p[k]);
+    if (too_close_to_face(y, vis, t.min_distance2)) return Verdict::TooCloseToFace;
+    if (contains_node(y, vis)) return Verdict::ContainsNode;
+    if (too_close_to_edge(y, vis, t.min_distance2)) return Verdict::TooCloseToEdge;
+    if (edge_crosses_face(y, vis)) return Verdict::EdgeCrossesFace;
+    if (face_crosses_edge(y, vis)) return Verdict::FaceCrossesEdge;
+    return Verdict::Accepted;
+}
+
+}  // namespace tubemesh::pyramids

@@ -1,0 +1,120 @@
+#include "engine/pyramids/fronts.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nanoflann.hpp>
+#include <string>
+
+#include "engine/quality/quality.hpp"
+
+namespace tubemesh::pyramids {
+
+namespace {
+
+std::string where(const Vec3& p) {
+    return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+}
+
+Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const PyramidOptions& opt) {
+    Front f;
+    for (int k = 0; k < 4; ++k) {
+        f.node[k] = q[k];
+        f.corner[k] = mesh.point(q[k]);
+    }
+    const auto& c = f.corner;
+    f.centroid = 0.25 * (c[0] + c[1] + c[2] + c[3]);
+    f.h = 0.25 * (norm(c[1] - c[0]) + norm(c[2] - c[1]) + norm(c[3] - c[2]) + norm(c[0] - c[3]));
+    // The cross product of the diagonals is twice the quad's vector area: it is the
+    // best-fit normal of a non-planar (bilinear) quad too, where the paper's AB x AD would
+    // depend on which corner is A.
+    const Vec3 area = cross(c[2] - c[0], c[3] - c[1]);
+    const double length = norm(area);
+    if (!(length > 1e-12 * f.h * f.h) || !(f.h > 0))
+        throw Error("pyramids: front quad " + std::to_string(index) + " near " + where(f.centroid) +
+                    " is degenerate (zero area); the ring's outer quads must be proper quadrilaterals");
+    f.normal = (1.0 / length) * area;
+    f.ideal = f.centroid + (opt.height_factor * f.h) * f.normal;
+    f.candidate_radius = opt.search_radius_factor * f.h;
+    // Try nodes lie between M and N, at most height_factor·h·(1 - Rate_K) from N.
+    const double lowest_rate = std::pow(opt.relax_rate, std::max(opt.try_nodes, 0));
+    double reach = std::max(f.candidate_radius, opt.height_factor * f.h * (1.0 - lowest_rate));
+    for (const Vec3& p : c) reach = std::max(reach, norm(p - f.ideal));
+    // A hair more than the exact bound, so that rounding in the bound itself cannot matter.
+    f.reach = reach * (1.0 + 1e-9);
+    f.query_radius = f.reach + opt.distance_factor * f.h * (1.0 + 1e-9);
+    const double ideal_quality = pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], f.ideal});
+    f.quality_floor = std::min(opt.min_quality, opt.min_quality_ratio * ideal_quality);
+    return f;
+}
+
+// nanoflann 1.4 adaptor over the ideal apexes.
+struct IdealCloud {
+    std::span<const Front> fronts;
+    std::size_t kdtree_get_point_count() const { return fronts.size(); }
+    double kdtree_get_pt(std::size_t i, std::size_t dim) const {
+        const Vec3& p = fronts[i].ideal;
+        return dim == 0 ? p.x : dim == 1 ? p.y : p.z;
+    }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+        return false;
+    }
+};
+using IdealTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, IdealCloud, double, index_t>,
+                                                      IdealCloud, 3, index_t>;
+
+}  // namespace
+
+std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads, const PyramidOptions& opt) {
+    const std::size_t n = quads.size() / 4;
+    std::vector<Front> fronts(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), opt);
+    });
+    return fronts;
+}
+
+Adjacency front_neighbours(std::span<const Front> fronts) {
+    Adjacency adj;
+    const std::size_t n = fronts.size();
+    adj.offset.assign(n + 1, 0);
+    if (n == 0) return adj;
+    double largest_query = 0, largest_reach = 0;
+    for (const Front& f : fronts) {
+        largest_query = std::max(largest_query, f.query_radius);
+        largest_reach = std::max(largest_reach, f.reach);
+    }
+
+    IdealCloud cloud{fronts};
+    IdealTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+
+    std::vector<std::vector<index_t>> rows(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<std::pair<index_t, double>> hits;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const Front& f = fronts[i];
+            const double q[3] = {f.ideal.x, f.ideal.y, f.ideal.z};
+            const double radius = std::max(f.query_radius + largest_reach, largest_query + f.reach);
+            tree.radiusSearch(q, radius * radius, hits, nanoflann::SearchParams(32, 0.0f, false));
+            auto& row = rows[i];
+            for (const auto& [j, d2] : hits) {
+                if (j == i) continue;
+                const Front& g = fronts[j];
+                const double reach = std::max(f.query_radius + g.reach, g.query_radius + f.reach);
+                if (d2 < reach * reach) row.push_back(j);
+            }
+            std::sort(row.begin(), row.end());
+        }
+    });
+    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] = adj.offset[i] + rows[i].size();
+    adj.items.resize(adj.offset[n]);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        std::copy(rows[i].begin(), rows[i].end(), adj.items.begin() + static_cast<std::ptrdiff_t>(adj.offset[i]));
+    });
+    return adj;
+}
+
+}  // namespace tubemesh::pyramids

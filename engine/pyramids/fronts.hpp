@@ -1,0 +1,56 @@
+#pragma once
+// What never changes about a front quad during the run: its corners, centroid M, normal n,
+// size h, ideal apex N and the radii that bound what it may build and what it must look at.
+// And the neighbour graph: which fronts can see each other's work.
+#include <array>
+#include <span>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/mesh/hybrid_mesh.hpp"
+#include "engine/pyramids/build_pyramids.hpp"
+#include "engine/pyramids/geometry.hpp"
+
+namespace tubemesh::pyramids {
+
+// Field order matters: a front scanning its neighbours reads their ideal apex and reach,
+// then their nodes and corners, so those come first and share as few cache lines as they can.
+struct alignas(64) Front {
+    Vec3 ideal;  // N = M + height_factor·h·n
+    // Every pyramid this front may build (base corners, any candidate or try node) lies in
+    // the ball of this radius around N.
+    double reach;
+    std::array<index_t, 4> node;
+    std::array<Vec3, 4> corner;
+    Vec3 centroid;  // M
+    Vec3 normal;    // n, unit, into the tet region
+    double h;       // mean edge length
+    // Existing nodes within this distance of N are candidates.
+    double candidate_radius;
+    // Everything this front's criteria look at lies in the ball of this radius around N:
+    // reach plus the largest distance threshold.
+    double query_radius;
+    // Candidates whose pyramid scores below this (scaled Jacobian) are refused:
+    // min(min_quality, min_quality_ratio · the ideal pyramid's score), so a front whose
+    // quad is too elongated for even its ideal pyramid to reach min_quality still gets one.
+    double quality_floor;
+};
+
+// Throws tubemesh::Error for a degenerate quad (zero area or zero edge length).
+std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads, const PyramidOptions& opt);
+
+// Compressed rows: row i is items[offset[i] .. offset[i+1]).
+struct Adjacency {
+    std::vector<std::size_t> offset;
+    std::vector<index_t> items;
+    std::span<const index_t> row(index_t i) const { return {items.data() + offset[i], offset[i + 1] - offset[i]}; }
+};
+
+// j is a neighbour of i when one's query ball meets the other's reach ball. A front's
+// pyramid stays inside its reach ball and everything its criteria read lies in its query
+// ball, so fronts that are not neighbours neither see nor touch each other's pyramids: they
+// can be served concurrently, and the pyramids a front can see are those of its neighbours.
+// Rows sorted by front index.
+Adjacency front_neighbours(std::span<const Front> fronts);
+
+}  // namespace tubemesh::pyramids

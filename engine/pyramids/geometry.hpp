@@ -1,0 +1,132 @@
+#pragma once
+// Floating-point vector helpers and the distances the suitability criteria measure
+// (point-triangle, segment-segment), plus axis-aligned boxes used to skip far-away pairs
+// before any distance or exact test. Inline: they run in the innermost loops.
+//
+// These are *measurements* in double, compared against thresholds of the order of h: a
+// rounding error of 1e-16 h cannot change an outcome that matters. Every yes/no question
+// about incidence (does this edge cross that face?) goes to the exact predicates instead.
+#include <algorithm>
+#include <cmath>
+
+#include "engine/mesh/hybrid_mesh.hpp"  // Vec3
+
+namespace tubemesh::pyramids {
+
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline double norm2(const Vec3& a) { return dot(a, a); }
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline double distance2(const Vec3& a, const Vec3& b) { return norm2(a - b); }
+
+struct Box {
+    Vec3 lo{}, hi{};
+
+    static Box around(const Vec3& c, double r) { return {{c.x - r, c.y - r, c.z - r}, {c.x + r, c.y + r, c.z + r}}; }
+    static Box of(const Vec3& a) { return {a, a}; }
+    void add(const Vec3& p) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    void add(const Box& b) {
+        add(b.lo);
+        add(b.hi);
+    }
+    bool overlaps(const Box& b) const {
+        return lo.x <= b.hi.x && b.lo.x <= hi.x && lo.y <= b.hi.y && b.lo.y <= hi.y && lo.z <= b.hi.z && b.lo.z <= hi.z;
+    }
+    Vec3 centre() const { return 0.5 * (lo + hi); }
+};
+
+// Squared distance between two boxes (0 when they overlap): a lower bound of the distance
+// between anything inside them, so "box distance >= d" proves "distance >= d".
+inline double box_distance2(const Box& a, const Box& b) {
+    auto gap = [](double alo, double ahi, double blo, double bhi) {
+        return alo > bhi ? alo - bhi : blo > ahi ? blo - ahi : 0.0;
+    };
+    const double dx = gap(a.lo.x, a.hi.x, b.lo.x, b.hi.x);
+    const double dy = gap(a.lo.y, a.hi.y, b.lo.y, b.hi.y);
+    const double dz = gap(a.lo.z, a.hi.z, b.lo.z, b.hi.z);
+    return dx * dx + dy * dy + dz * dz;
+}
+
+inline double box_distance2(const Box& a, const Vec3& p) { return box_distance2(a, Box::of(p)); }
+
+// Squared distance from p to the closed triangle abc (Ericson, Real-Time Collision
+// Detection, 5.1.5: Voronoi regions of the vertices, edges and face). A degenerate triangle
+// falls through to its edges, which is the right answer.
+inline double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return norm2(ap);
+    const Vec3 bp = p - b;
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return norm2(bp);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const double t = d1 / (d1 - d3);
+        return distance2(p, a + t * ab);
+    }
+    const Vec3 cp = p - c;
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return norm2(cp);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const double t = d2 / (d2 - d6);
+        return distance2(p, a + t * ac);
+    }
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return distance2(p, b + t * (c - b));
+    }
+    const double denom = va + vb + vc;
+    if (!(denom > 0)) {  // degenerate (collinear) triangle: nearest of its three edges
+        auto seg = [&](const Vec3& s, const Vec3& e) {
+            const Vec3 d = e - s;
+            const double l2 = norm2(d);
+            const double t = l2 > 0 ? std::clamp(dot(p - s, d) / l2, 0.0, 1.0) : 0.0;
+            return distance2(p, s + t * d);
+        };
+        return std::min({seg(a, b), seg(b, c), seg(c, a)});
+    }
+    const double v = vb / denom, w = vc / denom;
+    return distance2(p, a + v * ab + w * ac);
+}
+
+// Squared distance between the closed segments p1q1 and p2q2 (Ericson 5.1.9), with the
+// degenerate (point-like and parallel) cases handled by clamping.
+inline double segment_segment_distance2(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+    const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+    const double a = norm2(d1), e = norm2(d2), f = dot(d2, r);
+    double s = 0, t = 0;
+    if (a <= 0 && e <= 0) return norm2(r);
+    if (a <= 0) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = dot(d1, r);
+        if (e <= 0) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = dot(d1, d2);
+            const double denom = a * e - b * b;
+            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1) {
+                t = 1;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    return distance2(p1 + s * d1, p2 + t * d2);
+}
+
+}  // namespace tubemesh::pyramids

@@ -1,0 +1,82 @@
+#pragma once
+// What one front looks at (§4 Step 3): the front faces, edges and nodes near its ideal apex,
+// gathered with their coordinates into per-thread scratch so that judging a candidate is a
+// scan over small flat arrays.
+//
+// The paper calls visible the triangles and quadrangles *linked to a node* in the search
+// sphere. Here a face is visible when it comes within the front's query radius of N, whether
+// or not one of its nodes does: a large surface triangle right above a front has no node
+// nearby, and it is exactly the face that must stop the apex from leaving the domain.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/pyramids/face_tree.hpp"
+#include "engine/pyramids/front_state.hpp"
+#include "engine/pyramids/fronts.hpp"
+#include "engine/pyramids/geometry.hpp"
+#include "engine/pyramids/node_tree.hpp"
+
+namespace tubemesh::pyramids {
+
+enum class FaceRole : std::uint8_t {
+    Own,       // the current front's quad
+    Front,     // a face of the front: boundary triangle, pending quad, free pyramid triangle;
+               // oriented into the unmeshed region
+    Obstacle,  // an obstacle quad: not on the front, any orientation
+};
+
+struct VisibleFace {
+    std::array<index_t, 4> node;
+    std::array<Vec3, 4> p;
+    std::uint8_t size;  // 3 or 4; a quad is judged as the triangles (0,1,2) and (0,2,3)
+    FaceRole role;
+    bool at_base;  // the face contains a corner of the current front
+    Box box;
+    bool has(index_t n) const { return node[0] == n || node[1] == n || node[2] == n || (size == 4 && node[3] == n); }
+};
+
+struct VisibleEdge {
+    index_t a, b;  // a < b
+    Vec3 pa, pb;
+    Box box;
+    // An end of the edge is a node of a face at the base (one that contains a corner of the
+    // current front): the edge is in the base's immediate neighbourhood.
+    bool near_base;
+};
+
+struct NearNode {
+    index_t id;
+    Vec3 p;
+    double d2;  // squared distance to the ideal apex N
+};
+
+// The read-only world every front evaluation sees.
+struct World {
+    std::span<const Front> fronts;
+    const Adjacency& neighbours;
+    const FaceTree& fixed_faces;  // ids [0, boundary_count): boundary triangles, then obstacle quads
+    index_t boundary_count;
+    std::span<const index_t> obstacles;  // 4 per quad
+    const NodeTree& fixed_nodes;
+    const FrontState& state;
+};
+
+// Per-thread scratch, reused from front to front (no allocation once warm).
+struct Visible {
+    std::vector<VisibleFace> faces;
+    std::vector<VisibleEdge> edges;    // sorted by (a, b), unique
+    std::vector<NearNode> nodes;       // within reach of N: may lie inside a new pyramid
+    std::vector<NearNode> candidates;  // on the front, within the candidate radius, nearest first
+    std::vector<index_t> hits, stack;
+    std::vector<std::pair<std::uint64_t, index_t>> edge_keys;  // (edge key, 4 face + side)
+    std::vector<index_t> base_ring;                            // nodes of the faces at the base, sorted
+    std::vector<std::pair<index_t, double>> kd;
+};
+
+void gather_visible(const World& world, index_t front, Visible& out);
+
+}  // namespace tubemesh::pyramids

@@ -1,0 +1,59 @@
+#include "engine/sweep/cross_sections.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/core/types.hpp"
+
+namespace tubemesh::sweep {
+namespace {
+
+void copy_end(const TubePlan& plan, int e, int station, std::span<V3> nodes) {
+    const std::size_t per_station = static_cast<std::size_t>((plan.layers + 1) * plan.n);
+    const std::vector<V3>& end = plan.ends[static_cast<std::size_t>(e)].node;
+    std::copy(end.begin(), end.end(), nodes.begin() + static_cast<std::ptrdiff_t>(per_station * station));
+}
+
+}  // namespace
+
+double place_stations(const TubePlan& plan, int first, int last, std::span<V3> nodes) {
+    const std::size_t n = static_cast<std::size_t>(plan.n);
+    const std::size_t per_station = (static_cast<std::size_t>(plan.layers) + 1) * n;
+    std::vector<WallCursor> cursor(n);
+    const auto& depth0 = plan.ends[0].depth;
+    const auto& depth1 = plan.ends[1].depth;
+    double correction = 0;
+    for (int i = first; i < last; ++i) {
+        if (i == 0) {
+            copy_end(plan, 0, i, nodes);
+            continue;
+        }
+        if (i == plan.stations() - 1) {
+            copy_end(plan, 1, i, nodes);
+            continue;
+        }
+        const Station& st = plan.line.stations[static_cast<std::size_t>(i)];
+        const double w0 = plan.weight(0, st.s), w1 = plan.weight(1, st.s);
+        const V3 binormal = st.tangent.cross(st.reference);
+        V3* out = nodes.data() + per_station * static_cast<std::size_t>(i);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double a = plan.angle(static_cast<int>(k), st.s);
+            const V3 dir = std::cos(a) * st.reference + std::sin(a) * binormal;
+            const double wall_depth = w0 * depth0[k] + w1 * depth1[k];
+            // A chunk's first station: the neighbour's face and uv are the best guess.
+            if (cursor[k].face < 0 && k > 0) cursor[k] = cursor[k - 1];
+            const WallFoot foot = plan.wall.project(st.centre + st.radius * dir + wall_depth * st.tangent, cursor[k]);
+            correction = std::max(correction, foot.distance);
+            out[k] = foot.point;
+            for (std::size_t j = 1; j <= static_cast<std::size_t>(plan.layers); ++j) {
+                const double depth = w0 * depth0[j * n + k] + w1 * depth1[j * n + k] - wall_depth;
+                out[j * n + k] = foot.point + plan.offsets[j] * dir + depth * st.tangent;
+            }
+        }
+    }
+    return correction / plan.radius;
+}
+
+}  // namespace tubemesh::sweep

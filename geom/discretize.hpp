@@ -1,0 +1,34 @@
+#pragma once
+// Discretisation of the B-rep for the engine (paper §3.2): each tube's two end loops with the
+// same node count and node 0 of both on one generator line of the wall, its centre line by
+// arc length with tangents and reference directions, and every other B-rep edge by arc length
+// at the overall size S, once per edge however many faces share it.
+//
+// No OpenCASCADE header here: the output is engine/geometry/tube_data.hpp's plain data.
+#include <vector>
+
+#include "engine/geometry/tube_data.hpp"
+#include "geom/model.hpp"
+#include "geom/sizing.hpp"
+#include "geom/tubes.hpp"
+
+namespace tubemesh::geom {
+
+struct DiscretizeOptions {
+    // Nodes around every tube; 0 picks ring_node_count() per tube.
+    int ring_nodes = 0;
+};
+
+// Nodes around a tube of radius r in a ring of thickness St: the multiple of 4 (at least 4)
+// nearest to the ring's mid-circumference 2 pi (r + St/2) over St, so the ring's quads come
+// out about square. A multiple of 4 keeps opposite nodes opposite. For the paper's Example 1
+// (r = 0.02 with St about 0.14) it gives the paper's 4.
+int ring_node_count(double radius, double sweep_size);
+
+// Stations along the centre line: St apart by arc length, at least two (one layer).
+// Throws tubemesh::Error when a tube's wall cannot be followed from one loop to the other,
+// or when the plan has no positive sizes.
+DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tubes, const SizePlan& plan,
+                            const DiscretizeOptions& options = {});
+
+}  // namespace tubemesh::geom

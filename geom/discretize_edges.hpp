@@ -1,0 +1,16 @@
+#pragma once
+// B-rep edges cut by arc length (GCPnts_UniformAbscissa) into segments of at most a given
+// size, skipping the edges a tube owns.
+#include <set>
+#include <vector>
+
+#include "engine/geometry/tube_data.hpp"
+#include "geom/model.hpp"
+
+namespace tubemesh::geom {
+
+// One polyline per non-degenerate edge not in `skip`, by increasing edge id. A closed edge
+// gets at least 3 segments, so it stays a polygon.
+std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<int>& skip, double size);
+
+}  // namespace tubemesh::geom

@@ -1,0 +1,33 @@
+#pragma once
+// The OpenCASCADE side of geom::Model. For geom/ sources only: it includes OCCT headers, which
+// the engine and the tools never see.
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include "geom/model.hpp"
+
+namespace tubemesh::geom {
+
+struct Model::Impl {
+    TopoDS_Solid solid;
+    // Built once by make_model; index i is id i (1-based, like the maps themselves).
+    TopTools_IndexedMapOfShape faces;
+    TopTools_IndexedMapOfShape edges;
+    ImportReport report;
+};
+
+// Wraps one solid, numbering its faces and edges in TopExp::MapShapes order (deterministic for
+// a given shape). The caller has already checked the solid (see check_solid in geom/import).
+Model make_model(const TopoDS_Solid& solid, ImportReport report);
+
+inline const TopoDS_Solid& solid_of(const Model& m) { return m.impl().solid; }
+inline TopoDS_Face face_of(const Model& m, int id) { return TopoDS::Face(m.impl().faces.FindKey(id)); }
+inline TopoDS_Edge edge_of(const Model& m, int id) { return TopoDS::Edge(m.impl().edges.FindKey(id)); }
+// 0 when the face (or edge) is not one of the model's, whatever its orientation.
+inline int face_id(const Model& m, const TopoDS_Shape& face) { return m.impl().faces.FindIndex(face); }
+inline int edge_id(const Model& m, const TopoDS_Shape& edge) { return m.impl().edges.FindIndex(edge); }
+
+}  // namespace tubemesh::geom

@@ -1,0 +1,163 @@
+#include "geom/sizing_distances.hpp"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <Bnd_Box.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+
+#include "geom/model_occt.hpp"
+
+namespace tubemesh::geom {
+namespace {
+
+using P = std::array<double, 3>;
+
+P sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+double dot(const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// Closest distance between segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection
+// 5.1.9), degenerate segments included.
+double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+    const P d1 = sub(p1, p0), d2 = sub(q1, q0), r = sub(p0, q0);
+    const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+    double s = 0, t = 0;
+    if (a <= 1e-300 && e <= 1e-300) {
+        s = t = 0;
+    } else if (a <= 1e-300) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = dot(d1, r);
+        if (e <= 1e-300) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = dot(d1, d2), denom = a * e - b * b;
+            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1) {
+                t = 1;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    P d{};
+    for (int i = 0; i < 3; ++i) d[i] = r[i] + d1[i] * s - d2[i] * t;
+    return std::sqrt(dot(d, d));
+}
+
+// Bounding boxes of runs of segments, so most segment pairs are never looked at.
+struct Chunk {
+    std::size_t first, last;  // segment indices [first, last)
+    Vec3 lo, hi;
+};
+
+constexpr std::size_t kChunk = 16;
+
+std::vector<Chunk> chunks(const std::vector<Vec3>& line) {
+    std::vector<Chunk> out;
+    const std::size_t segments = line.size() > 1 ? line.size() - 1 : 1;
+    for (std::size_t first = 0; first < segments; first += kChunk) {
+        Chunk c{first, std::min(first + kChunk, segments), line[first], line[first]};
+        for (std::size_t i = first; i <= std::min(c.last, line.size() - 1); ++i) {
+            c.lo = {std::min(c.lo.x, line[i].x), std::min(c.lo.y, line[i].y), std::min(c.lo.z, line[i].z)};
+            c.hi = {std::max(c.hi.x, line[i].x), std::max(c.hi.y, line[i].y), std::max(c.hi.z, line[i].z)};
+        }
+        out.push_back(c);
+    }
+    return out;
+}
+
+double box_distance(const Chunk& a, const Chunk& b) {
+    const double dx = std::max({0.0, a.lo.x - b.hi.x, b.lo.x - a.hi.x});
+    const double dy = std::max({0.0, a.lo.y - b.hi.y, b.lo.y - a.hi.y});
+    const double dz = std::max({0.0, a.lo.z - b.hi.z, b.lo.z - a.hi.z});
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// The centre line as an OCCT shape: a polygon wire, or a vertex for a one-point line.
+TopoDS_Shape polyline_shape(const std::vector<Vec3>& line) {
+    if (line.size() == 1) return BRepBuilderAPI_MakeVertex(gp_Pnt(line[0].x, line[0].y, line[0].z)).Shape();
+    BRepBuilderAPI_MakePolygon polygon;
+    for (const Vec3& p : line) polygon.Add(gp_Pnt(p.x, p.y, p.z));
+    return polygon.Shape();
+}
+
+}  // namespace
+
+double polyline_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    double best = std::numeric_limits<double>::infinity();
+    const auto ca = chunks(a), cb = chunks(b);
+    const auto end = [](const std::vector<Vec3>& l, std::size_t i) { return l[std::min(i + 1, l.size() - 1)]; };
+    for (const Chunk& x : ca)
+        for (const Chunk& y : cb) {
+            if (box_distance(x, y) >= best) continue;
+            for (std::size_t i = x.first; i < x.last; ++i)
+                for (std::size_t j = y.first; j < y.last; ++j)
+                    best = std::min(best, segment_distance(a[i], end(a, i), b[j], end(b, j)));
+        }
+    return best;
+}
+
+double box_diagonal(const Model& model, const std::vector<TubeInfo>& tubes) {
+    std::set<int> walls;
+    for (const TubeInfo& t : tubes) walls.insert(t.faces.begin(), t.faces.end());
+    Bnd_Box box;
+    for (int f = 1; f <= model.face_count(); ++f)
+        if (!walls.count(f)) BRepBndLib::Add(face_of(model, f), box);
+    if (box.IsVoid()) BRepBndLib::Add(solid_of(model), box);
+    if (box.IsVoid()) return 0;
+    return std::sqrt(box.SquareExtent());
+}
+
+Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& tubes) {
+    Clearances c;
+    for (std::size_t i = 0; i < tubes.size(); ++i)
+        for (std::size_t j = i + 1; j < tubes.size(); ++j) {
+            const double d = polyline_distance(tubes[i].centre_line, tubes[j].centre_line) - tubes[i].radius_max -
+                             tubes[j].radius_max;
+            if (d < c.dc) {
+                c.dc = d;
+                c.dc_tube_a = static_cast<int>(i);
+                c.dc_tube_b = static_cast<int>(j);
+            }
+        }
+
+    std::set<int> walls;
+    for (const TubeInfo& t : tubes) walls.insert(t.faces.begin(), t.faces.end());
+    std::vector<TopoDS_Shape> lines;
+    std::vector<Bnd_Box> line_boxes;
+    for (const TubeInfo& t : tubes) {
+        lines.push_back(polyline_shape(t.centre_line));
+        line_boxes.emplace_back();
+        BRepBndLib::Add(lines.back(), line_boxes.back());
+    }
+    for (int f = 1; f <= model.face_count(); ++f) {
+        if (walls.count(f)) continue;
+        const TopoDS_Face face = face_of(model, f);
+        Bnd_Box face_box;
+        BRepBndLib::Add(face, face_box);  // enlarged by tolerances: never farther than the face
+        for (std::size_t i = 0; i < tubes.size(); ++i) {
+            if (tubes[i].hosts[0] == f || tubes[i].hosts[1] == f) continue;
+            const double r = tubes[i].radius_max;
+            if (face_box.Distance(line_boxes[i]) - r >= c.dcb) continue;
+            BRepExtrema_DistShapeShape dist(face, lines[i]);
+            if (!dist.IsDone() || dist.NbSolution() == 0) continue;
+            if (dist.Value() - r < c.dcb) {
+                c.dcb = dist.Value() - r;
+                c.dcb_tube = static_cast<int>(i);
+                c.dcb_face = f;
+            }
+        }
+    }
+    return c;
+}
+
+}  // namespace tubemesh::geom

@@ -1,0 +1,16 @@
+#pragma once
+// Writing a Model as a STEP file (AP214), for `tubemesh make-block` and round-trip tests.
+#include <filesystem>
+
+#include "geom/model.hpp"
+
+namespace tubemesh::geom {
+
+// Writes the solid with its coordinates unchanged, labelled with the model's length unit when
+// STEP has a name for it (millimetre, metre, centimetre, inch, foot, ...), else millimetre.
+// The file appears under `path` only when complete: it is written to a temporary name in the
+// same directory and renamed. Throws tubemesh::Error when the directory is not writable or
+// OpenCASCADE cannot translate the shape.
+void write_step(const Model& model, const std::filesystem::path& path);
+
+}  // namespace tubemesh::geom

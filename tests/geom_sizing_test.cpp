@@ -1,0 +1,99 @@
+// Sizing (paper §2): defaults, the three rules in the paper's order on constructed cases, and
+// the guards that keep a ring and its pyramids clear of faces, other rings and the bend.
+#include <gtest/gtest.h>
+
+#include "engine/core/types.hpp"
+#include "geom/sizing.hpp"
+#include "tests/geom_tubes_solids.hpp"
+
+namespace tubemesh {
+namespace {
+
+constexpr double kR = 0.02;
+
+geom::SizePlan plan_for(const TopoDS_Solid& solid, double sweep) {
+    const geom::Model model = test::model_of(solid);
+    const geom::TubeSearch found = geom::find_tubes(model);
+    geom::SizingOptions options;
+    options.sweep_size = sweep;
+    return geom::plan_sizes(model, found.tubes, options);
+}
+
+std::string changes(const geom::SizePlan& p) {
+    std::string s;
+    for (const auto& c : p.changes) s += c.rule + ": " + c.reason + "\n";
+    return s;
+}
+
+TEST(GeomSizing, DefaultsComeFromTheTubeDiameterAndTheBox) {
+    const geom::Model model = test::model_of(
+        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.5, -0.1}, {0.5, 0.5, 1.1})}, kR));
+    const geom::SizePlan p = geom::plan_sizes(model, geom::find_tubes(model).tubes);
+    EXPECT_NEAR(p.sweep_size, 2 * kR, 1e-9);
+    EXPECT_NEAR(p.size, std::sqrt(3.0) / 25, 1e-6);
+    EXPECT_TRUE(p.changes.empty()) << changes(p);
+    EXPECT_NEAR(p.dcb, 0.5 - kR, 1e-7);  // to the four side faces
+    EXPECT_TRUE(std::isinf(p.dc));
+    EXPECT_TRUE(std::isinf(p.rc));
+}
+
+TEST(GeomSizing, PipeNearAFaceTriggersRuleOne) {
+    // Wall 0.05 from face y = 0.
+    const geom::SizePlan p = plan_for(
+        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR),
+        0.1);
+    ASSERT_GE(p.changes.size(), 1u);
+    EXPECT_EQ(p.changes[0].rule.substr(0, 2), "1:") << changes(p);
+    EXPECT_NEAR(p.dcb, 0.05, 1e-7);
+    EXPECT_NEAR(p.changes[0].new_sweep_size, 0.07, 1e-7);
+    EXPECT_NEAR(p.changes[0].new_size, 1.3 * 0.07, 1e-7);
+    // 0.07 + 0.98 x 0.07 still reaches past the face: the boundary guard follows.
+    ASSERT_EQ(p.changes.size(), 2u) << changes(p);
+    EXPECT_EQ(p.changes[1].rule, "guard: boundary");
+    EXPECT_LT(p.sweep_size * (1 + 0.98154), p.dcb);
+}
+
+TEST(GeomSizing, TwoClosePipesTriggerRuleTwo) {
+    // Walls 0.06 apart, 0.43 from the side faces.
+    const geom::SizePlan p = plan_for(test::box_with_pipes({0, 0, 0}, {1, 1, 1},
+                                                           {test::straight_spine({0.45, 0.5, -0.1}, {0.45, 0.5, 1.1}),
+                                                            test::straight_spine({0.55, 0.5, -0.1}, {0.55, 0.5, 1.1})},
+                                                           kR),
+                                      0.1);
+    EXPECT_NEAR(p.dc, 0.06, 1e-7);
+    ASSERT_GE(p.changes.size(), 1u);
+    EXPECT_EQ(p.changes[0].rule.substr(0, 2), "2:") << changes(p);
+    EXPECT_NEAR(p.changes[0].new_sweep_size, 0.036, 1e-7);
+    EXPECT_EQ(p.changes.back().rule, "guard: rings") << changes(p);
+    EXPECT_LT(p.sweep_size * (2 + 0.98154), p.dc);
+}
+
+TEST(GeomSizing, TightBendTriggersRuleThree) {
+    // A quarter turn of radius 0.1 round the box's z edge.
+    const geom::SizePlan p =
+        plan_for(test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::arc_spine({0, 0, 0.5}, 0.1, -30, 120)}, kR), 0.1);
+    EXPECT_NEAR(p.rc, 0.1, 1e-5);
+    ASSERT_GE(p.changes.size(), 1u);
+    EXPECT_EQ(p.changes[0].rule.substr(0, 2), "3:") << changes(p);
+    EXPECT_NEAR(p.changes[0].new_sweep_size, 0.08, 1e-5);
+    EXPECT_EQ(p.changes.back().rule, "guard: bend") << changes(p);
+    EXPECT_LT(kR + p.sweep_size, p.rc);
+}
+
+TEST(GeomSizing, BadUserSizesAreErrors) {
+    const geom::Model model = test::model_of(test::box_with_blind_hole(kR, 0.2));
+    geom::SizingOptions options;
+    options.size = -1;
+    EXPECT_THROW(geom::plan_sizes(model, {}, options), Error);
+}
+
+TEST(GeomSizing, NoTubesPlansOnlyS) {
+    const geom::Model model = test::model_of(test::box_with_blind_hole(kR, 0.2));
+    const geom::SizePlan p = geom::plan_sizes(model, {});
+    EXPECT_EQ(p.sweep_size, 0);
+    EXPECT_GT(p.size, 0);
+    EXPECT_TRUE(p.changes.empty());
+}
+
+}  // namespace
+}  // namespace tubemesh

@@ -1,0 +1,98 @@
+// Parts of the pyramid layer on their own: exact segment/triangle contact with shared
+// nodes (the coplanar cases a straight ring produces everywhere), and conflict-free batches.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <vector>
+
+#include "engine/pyramids/batches.hpp"
+#include "engine/pyramids/contacts.hpp"
+#include "engine/pyramids/fronts.hpp"
+#include "tests/support/ring_scene.hpp"
+
+namespace {
+
+using namespace tubemesh;
+using namespace tubemesh::pyramids;
+namespace scene = tubemesh::testing;
+
+// Triangle 10-11-12 in the plane z = 0; a candidate pyramid with its apex off that plane.
+struct PyramidContact : ::testing::Test {
+    const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+    const std::array<index_t, 3> ids{10, 11, 12};
+    const std::array<const Vec3*, 3> tri{&a, &b, &c};
+    NewPyramid y{{20, 21, 22, 23, kNoIndex}, {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}}}};
+
+    bool contact(index_t ip, Vec3 p, index_t iq, Vec3 q) const { return improper_contact(ip, p, iq, q, ids, tri, y); }
+};
+
+TEST_F(PyramidContact, SharedNodeOffThePlaneIsAllowed) {
+    EXPECT_FALSE(contact(10, a, kNoIndex, {0.2, 0.2, 1}));
+    EXPECT_FALSE(contact(kNoIndex, {0.2, 0.2, -1}, 11, b));
+}
+
+TEST_F(PyramidContact, AnEdgeOfTheTriangleIsAllowed) { EXPECT_FALSE(contact(10, a, 11, b)); }
+
+TEST_F(PyramidContact, CollinearContinuationOfAnEdgeIsAllowed) {
+    // The next axial edge of a straight ring beyond a pyramid face's base edge.
+    EXPECT_FALSE(contact(11, b, 30, {2, 0, 0}));
+    EXPECT_FALSE(contact(10, a, 30, {-1, 0, 0}));
+    EXPECT_FALSE(contact(10, a, 30, {-1, -1, 0}));  // coplanar, pointing away
+}
+
+TEST_F(PyramidContact, CoplanarOverlapBeyondTheSharedNodeIsRefused) {
+    EXPECT_TRUE(contact(11, b, 30, {0.5, 0, 0}));    // back along the edge
+    EXPECT_TRUE(contact(10, a, 30, {0.2, 0.2, 0}));  // into the interior
+    EXPECT_TRUE(contact(10, a, 30, {2, 2, 0}));      // across the opposite edge
+}
+
+TEST_F(PyramidContact, UnsharedContactOfAnyKindIsRefused) {
+    EXPECT_TRUE(contact(30, {0.2, 0.2, -1}, 31, {0.2, 0.2, 1}));  // crossing
+    EXPECT_TRUE(contact(30, {0.5, 0, 0}, 31, {0.5, -1, 0}));      // touching an edge
+    EXPECT_TRUE(contact(30, {0.2, 0.2, 0}, 31, {0.2, 0.2, 1}));   // ending on the face
+    EXPECT_FALSE(contact(30, {2, 2, -1}, 31, {2, 2, 1}));
+    EXPECT_FALSE(contact(30, {0.2, 0.2, 0.1}, 31, {0.2, 0.2, 1}));
+}
+
+TEST(PyramidBatches, NoTwoNeighboursShareABatchAndEveryFrontHasOne) {
+    const double a = 2.0 * std::sin(std::numbers::pi / 8);
+    scene::BoxGrid box;
+    box.lines[0] = {0, 1, 3, 5, 6};
+    box.lines[1] = box.lines[0];
+    box.lines[2] = scene::spaced(0, 40 * 1.5 * a, 20);
+    const scene::RingScene s =
+        scene::build_ring_scene(box, {scene::straight_ring(3, 3, 0, 40 * 1.5 * a, 40, 1.0, 0.5)});
+    const std::vector<Front> fronts = make_fronts(s.mesh, s.front_quads, PyramidOptions{});
+    const Adjacency nbr = front_neighbours(fronts);
+    for (index_t i = 0; i < fronts.size(); ++i)
+        for (index_t j : nbr.row(i)) {
+            const auto back = nbr.row(j);
+            EXPECT_TRUE(std::binary_search(back.begin(), back.end(), i)) << "neighbours are symmetric";
+        }
+    // Every front twice, in reverse order, and once more in a different order.
+    std::vector<index_t> order(fronts.size());
+    for (index_t i = 0; i < order.size(); ++i) order[i] = static_cast<index_t>(order.size() - 1 - i);
+    Batcher batcher(static_cast<index_t>(fronts.size()));
+    for (int round = 0; round < 2; ++round) {
+        Adjacency batches;
+        batcher.colour(order, nbr, batches);
+        std::vector<int> batch_of(fronts.size(), -1);
+        for (index_t b = 0; b + 1 < batches.offset.size(); ++b)
+            for (index_t i : batches.row(b)) {
+                EXPECT_EQ(batch_of[i], -1);
+                batch_of[i] = static_cast<int>(b);
+            }
+        for (index_t i : order) {
+            ASSERT_GE(batch_of[i], 0);
+            for (index_t j : nbr.row(i)) EXPECT_NE(batch_of[i], batch_of[j]);
+        }
+        // The first front in the order is in the first batch.
+        EXPECT_EQ(batch_of[order.front()], 0);
+        std::rotate(order.begin(), order.begin() + 7, order.end());
+    }
+}
+
+}  // namespace

@@ -14,5 +14,6 @@ struct Command {
 Command add_check_command(CLI::App& app);       // tubemesh check MESH
 Command add_inspect_command(CLI::App& app);     // tubemesh inspect CAD
 Command add_make_block_command(CLI::App& app);  // tubemesh make-block --preset|--seed|--spec -o OUT
+Command add_mesh_command(CLI::App& app);        // tubemesh mesh [IN] -o OUT [--until STAGE]
 
 }  // namespace tubemesh::cli

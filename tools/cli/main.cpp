@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
         cli::add_check_command(app),
         cli::add_inspect_command(app),
         cli::add_make_block_command(app),
+        cli::add_mesh_command(app),
     };
 
     try {

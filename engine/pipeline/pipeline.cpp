@@ -1,0 +1,153 @@
+#include "engine/pipeline/pipeline.hpp"
+
+#include <tbb/global_control.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_set>
+
+#include "engine/surface/face_boundaries.hpp"
+#include "engine/surface/mesh_surfaces.hpp"
+
+namespace tubemesh {
+
+const char* stage_name(Stage s) {
+    switch (s) {
+        case Stage::Sweep: return "sweep";
+        case Stage::Surface: return "surface";
+        case Stage::Pyramids: return "pyramids";
+    }
+    return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
+    const auto t0 = Clock::now();
+    SweepOptions sweep = opt.sweep;
+    if (sweep.sweep_size <= 0) sweep.sweep_size = in.geometry.sweep_size;
+    sweep.store_boundary_faces = true;
+    if (!in.geometry.tubes.empty()) out.sweep = sweep_tubes(out.mesh, in.geometry.tubes, in.surfaces, sweep);
+    const SweepStats& s = out.sweep.stats;
+    PhaseReport r{"sweep", seconds_since(t0), {}};
+    r.counts = {{"tubes", double(s.tubes)},
+                {"nodes", double(s.nodes)},
+                {"hexes", double(s.hexes)},
+                {"outer quads", double(s.outer_quads)},
+                {"min J_m", s.min_scaled_jacobian},
+                {"max cond", s.max_condition}};
+    out.phases.push_back(std::move(r));
+}
+
+void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
+    const auto t0 = Clock::now();
+    const DiscreteGeometry& g = in.geometry;
+    if (!(g.size > 0)) throw Error("the overall mesh size S must be positive to mesh the surfaces");
+    HybridMesh& mesh = out.mesh;
+
+    // Size field: S everywhere, finer near the rings' outer polygons.
+    std::vector<SizeSource> sources;
+    for (const TubeRing& ring : out.sweep.rings)
+        for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, sources);
+    SizeFieldOptions sf;
+    sf.max_size = g.size;
+    sf.growth = opt.size_growth;
+    const SizeField size(sf, std::move(sources));
+
+    const index_t points_before = mesh.point_count();
+    const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(g.edges, mesh);
+    const index_t edge_points = mesh.point_count() - points_before;
+
+    std::vector<index_t> tube_loop_edges;
+    std::unordered_set<index_t> walls;
+    for (const TubeData& t : g.tubes) {
+        tube_loop_edges.insert(tube_loop_edges.end(), t.loop1_edges.begin(), t.loop1_edges.end());
+        tube_loop_edges.insert(tube_loop_edges.end(), t.loop2_edges.begin(), t.loop2_edges.end());
+        walls.insert(t.wall_faces.begin(), t.wall_faces.end());
+    }
+
+    std::vector<surface::SurfaceFace> faces;
+    for (const PipelineFace& f : in.faces) {
+        if (f.tube_wall || walls.count(f.id)) continue;
+        const SurfaceMap* map = in.surfaces(f.id);
+        if (!map) throw Error("face_" + std::to_string(f.id) + " has no surface map");
+        std::vector<surface::HolePolygon> holes;
+        for (const TubeRing& ring : out.sweep.rings)
+            for (const RingEnd& end : ring.ends)
+                if (end.host == f.id) holes.push_back({end.outer_nodes, end.outer_uv});
+        surface::SurfaceFace face;
+        face.surface = map;
+        face.boundary = surface::face_boundary(*map, g.edges, edge_nodes, tube_loop_edges, holes, mesh, g.size);
+        face.group = mesh.surface_group_id("face_" + std::to_string(f.id));
+        faces.push_back(std::move(face));
+    }
+    const surface::SurfaceMeshStats s = surface::mesh_surfaces(faces, size, opt.surface, mesh);
+    PhaseReport r{"surface", seconds_since(t0), {}};
+    r.counts = {{"faces", double(s.faces)},
+                {"edge nodes", double(edge_points)},
+                {"interior nodes", double(s.interior_nodes)},
+                {"triangles", double(s.triangles)}};
+    out.phases.push_back(std::move(r));
+}
+
+void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
+    const auto t0 = Clock::now();
+    HybridMesh& mesh = out.mesh;
+    // Copies: build_pyramids appends to the mesh while it reads these.
+    const std::vector<index_t> boundary = mesh.block(FaceKind::Tri).nodes;
+    PyramidInput in;
+    in.front_quads = out.sweep.outer_quads;
+    in.boundary_triangles = boundary;
+    in.obstacle_quads = out.sweep.end_quads;
+    in.region = mesh.region_id("pyramids");
+    PyramidResult p;
+    if (!out.sweep.outer_quads.empty()) {
+        p = build_pyramids(mesh, in, opt.pyramids);
+    }
+    // The tet region's boundary: free pyramid triangles, then the uncovered surface triangles.
+    out.tet_front = p.free_triangles;
+    std::vector<char> covered(boundary.size() / 3, 0);
+    for (index_t t : p.covered_boundary_triangles) covered[t] = 1;
+    for (std::size_t t = 0; t < covered.size(); ++t)
+        if (!covered[t]) out.tet_front.insert(out.tet_front.end(), boundary.begin() + 3 * t, boundary.begin() + 3 * t + 3);
+    out.pyramid_stats = p.stats;
+    const PyramidStats& s = p.stats;
+    PhaseReport r{"pyramids", seconds_since(t0), {}};
+    index_t try_nodes = 0;
+    for (index_t k : s.try_node) try_nodes += k;
+    r.counts = {{"pyramids", double(s.pyramids)},
+                {"ideal apex", double(s.ideal)},
+                {"existing apex", double(s.existing + s.existing_relaxed)},
+                {"try-node apex", double(try_nodes)},
+                {"drawbacks", double(s.drawback_rounds)},
+                {"front triangles", double(out.tet_front.size() / 3)}};
+    out.phases.push_back(std::move(r));
+}
+
+}  // namespace
+
+PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options, Stage until) {
+    if (options.threads < 0) throw Error("the thread count must be positive (0: all cores)");
+    std::optional<tbb::global_control> threads;
+    if (options.threads > 0)
+        threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.threads));
+
+    PipelineResult out;
+    run_sweep(input, options, out);
+    out.reached = Stage::Sweep;
+    if (until == Stage::Sweep) return out;
+    run_surface(input, options, out);
+    out.reached = Stage::Surface;
+    if (until == Stage::Surface) return out;
+    run_pyramids(options, out);
+    out.reached = Stage::Pyramids;
+    return out;
+}
+
+}  // namespace tubemesh

@@ -1,0 +1,97 @@
+// `tubemesh mesh` end to end: a STEP file from make-block through --until sweep passes
+// `tubemesh check`; the default stage writes pyramids; errors leave no file behind.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "tests/support/process.hpp"
+
+namespace {
+
+using tubemesh::testing::run_command;
+using tubemesh::testing::shell_quote;
+using tubemesh::testing::TempDir;
+
+std::string cli() { return shell_quote(TUBEMESH_CLI); }
+
+std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
+
+TEST(CliMesh, StraightPipeSweepStagePassesCheck) {
+    TempDir dir;
+    const auto made = run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step"));
+    ASSERT_EQ(made.exit_code, 0) << made.out << made.err;
+    const auto meshed = run_command(cli() + " mesh " + q(dir / "x.step") + " -o " + q(dir / "y.msh") + " --until sweep");
+    ASSERT_EQ(meshed.exit_code, 0) << meshed.out << meshed.err;
+    EXPECT_NE(meshed.out.find("sweep"), std::string::npos) << meshed.out;
+    EXPECT_NE(meshed.out.find("Hexahedral mesh"), std::string::npos) << meshed.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "y.msh"));
+    const auto checked = run_command(cli() + " check " + q(dir / "y.msh"));
+    EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
+}
+
+TEST(CliMesh, PyramidStageWritesSeveralOutputs) {
+    TempDir dir;
+    ASSERT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step")).exit_code, 0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "x.step") + " -o " + q(dir / "a.msh") + " -o " +
+                               q(dir / "a.vtu") + " --until pyramids --threads 2");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("pyramids"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Pyramidal mesh"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "a.msh"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "a.vtu"));
+}
+
+TEST(CliMesh, QuietPrintsNothing) {
+    TempDir dir;
+    ASSERT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step")).exit_code, 0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "x.step") + " -o " + q(dir / "y.msh") + " --until sweep --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "y.msh"));
+}
+
+TEST(CliMesh, MissingInputIsExitTwoWithoutOutput) {
+    TempDir dir;
+    const auto r = run_command(cli() + " mesh " + q(dir / "missing.step") + " -o " + q(dir / "y.msh") + " --until sweep");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_FALSE(r.err.empty());
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "y.msh"));
+}
+
+TEST(CliMesh, UnknownStageIsAUsageError) {
+    TempDir dir;
+    const auto r = run_command(cli() + " mesh -o " + q(dir / "y.msh") + " --until tets");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_FALSE(std::filesystem::exists(dir / "y.msh"));
+}
+
+TEST(CliMesh, BadExtensionWritesNothing) {
+    TempDir dir;
+    ASSERT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step")).exit_code, 0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "x.step") + " -o " + q(dir / "y.xyz") + " --until sweep");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "y.xyz"));
+}
+
+TEST(CliMesh, InpPastTheSweepIsRefusedUpFront) {
+    TempDir dir;
+    const auto r = run_command(cli() + " mesh -o " + q(dir / "y.msh") + " -o " + q(dir / "y.inp") + " --until surface");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.err.find(".inp"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "y.msh"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "y.inp"));
+}
+
+TEST(CliMesh, BuiltInDamBlockWithoutInput) {
+    TempDir dir;
+    const auto r = run_command(cli() + " mesh -o " + q(dir / "dam.msh") + " -o " + q(dir / "dam.inp") + " --until sweep");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("paper-ex1"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "dam.inp"));
+    const auto checked = run_command(cli() + " check " + q(dir / "dam.msh"));
+    EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
+}
+
+}  // namespace

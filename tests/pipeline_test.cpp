@@ -1,0 +1,124 @@
+// The pipeline on built-in blocks (geom builders -> prepare -> run_pipeline), stage by stage:
+// after the sweep a valid, conforming hex mesh of good quality; after the surface the
+// triangles on every non-wall face; after the pyramids one valid pyramid per outer quad.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "engine/check/mesh_check.hpp"
+#include "engine/pipeline/pipeline.hpp"
+#include "engine/quality/quality.hpp"
+#include "geom/builders/block_builder.hpp"
+#include "geom/builders/presets.hpp"
+#include "geom/prepare.hpp"
+
+namespace {
+
+using namespace tubemesh;
+
+struct Prepared {
+    geom::BuiltBlock block;
+    geom::PreparedModel prepared;
+};
+
+Prepared prepare(const std::string& preset) {
+    geom::BuiltBlock block = geom::build_block(geom::preset_spec(preset));
+    geom::PreparedModel prepared = geom::prepare_model(block.model);
+    return {std::move(block), std::move(prepared)};
+}
+
+// Cell-level problems only: partial meshes legitimately have open or unowned boundary faces.
+void expect_cells_valid(const CheckReport& r) {
+    for (ViolationKind k : {ViolationKind::NonPositiveVolume, ViolationKind::DegenerateCell,
+                            ViolationKind::FaceSharedByMany, ViolationKind::SameOrientation,
+                            ViolationKind::NonMatchingFace})
+        EXPECT_EQ(r.find(k), nullptr) << describe(r);
+}
+
+void print_phases(const std::string& name, const PipelineResult& r) {
+    for (const PhaseReport& p : r.phases) {
+        std::string counts;
+        for (const auto& c : p.counts) counts += " " + c.first + "=" + std::to_string(c.second);
+        std::printf("  %s %s %.3f s:%s\n", name.c_str(), p.name.c_str(), p.seconds, counts.c_str());
+    }
+}
+
+class PipelinePreset : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PipelinePreset, SweepStageIsValidAndConforming) {
+    const Prepared p = prepare(GetParam());
+    ASSERT_FALSE(p.prepared.geometry.tubes.empty());
+    const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {}, Stage::Sweep);
+    print_phases(GetParam(), r);
+    EXPECT_EQ(r.reached, Stage::Sweep);
+    ASSERT_EQ(r.phases.size(), 1u);
+    EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), 0u);
+    EXPECT_EQ(r.mesh.face_count(FaceKind::Tri), 0u);
+    ASSERT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
+    const CheckReport check = check_mesh(r.mesh);
+    EXPECT_TRUE(check.ok()) << describe(check);
+    const QualitySummary q = summarize_quality(r.mesh);
+    EXPECT_GE(q.hex_scaled_jacobian.min, 0.5);
+    EXPECT_LE(q.hex_condition.max, 4.0);
+}
+
+TEST_P(PipelinePreset, PyramidStageHasOneValidPyramidPerOuterQuad) {
+    const Prepared p = prepare(GetParam());
+    const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {}, Stage::Pyramids);
+    print_phases(GetParam(), r);
+    EXPECT_EQ(r.reached, Stage::Pyramids);
+    ASSERT_EQ(r.phases.size(), 3u);
+    const index_t outer = static_cast<index_t>(r.sweep.outer_quads.size() / 4);
+    ASSERT_GT(outer, 0u);
+    EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), outer);
+    EXPECT_GT(r.mesh.face_count(FaceKind::Tri), 0u);
+    EXPECT_FALSE(r.tet_front.empty());
+    EXPECT_EQ(r.tet_front.size() % 3, 0u);
+    const CheckReport check = check_mesh(r.mesh);
+    expect_cells_valid(check);
+    const QualitySummary q = summarize_quality(r.mesh);
+    EXPECT_GT(q.pyramid_jacobian.min, 0.3);
+    EXPECT_GE(q.hex_scaled_jacobian.min, 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, PipelinePreset, ::testing::Values("straight-pipe", "paper-ex1"),
+                         [](const auto& info) {
+                             std::string s = info.param;
+                             for (char& c : s)
+                                 if (c == '-') c = '_';
+                             return s;
+                         });
+
+TEST(Pipeline, SurfaceStageAddsTrianglesOnNonWallFaces) {
+    const Prepared p = prepare("straight-pipe");
+    const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {}, Stage::Surface);
+    EXPECT_EQ(r.reached, Stage::Surface);
+    ASSERT_EQ(r.phases.size(), 2u);
+    EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), 0u);
+    EXPECT_GT(r.mesh.face_count(FaceKind::Tri), 0u);
+    expect_cells_valid(check_mesh(r.mesh));
+    // Every triangle group is a non-wall face.
+    for (index_t g : r.mesh.block(FaceKind::Tri).group)
+        EXPECT_EQ(r.mesh.surface_group_names[g].rfind("face_", 0), 0u) << r.mesh.surface_group_names[g];
+}
+
+TEST(Pipeline, SameMeshForOneAndTwoThreads) {
+    const Prepared p = prepare("straight-pipe");
+    MeshOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), one, Stage::Pyramids);
+    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), two, Stage::Pyramids);
+    EXPECT_TRUE(a.mesh == b.mesh);
+    EXPECT_EQ(a.tet_front, b.tet_front);
+}
+
+TEST(Pipeline, NegativeThreadCountIsAnError) {
+    const Prepared p = prepare("straight-pipe");
+    MeshOptions o;
+    o.threads = -1;
+    EXPECT_THROW(run_pipeline(p.prepared.pipeline_input(), o, Stage::Sweep), Error);
+}
+
+}  // namespace

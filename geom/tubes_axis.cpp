@@ -163,14 +163,27 @@ void TubeAxis::refine(std::size_t last, const AxisSample& next, double sigma0, c
 }
 
 AxisSample TubeAxis::end_sample(double sigma) const {
-    const Points g{generators_[0].at(sigma), generators_[1].at(sigma), generators_[2].at(sigma),
-                   generators_[3].at(sigma)};
+    Points g{generators_[0].at(sigma), generators_[1].at(sigma), generators_[2].at(sigma),
+             generators_[3].at(sigma)};
+    // The loop's own points (where the rings' nodes 0 sit), not the wall surface's, which are
+    // up to the edge tolerance away: the reference then points at ring node 0 exactly.
+    for (int k = 0; k < 4; ++k) g[k].p = sigma < 0.5 ? generators_[k].start().p : generators_[k].end().p;
     // The four end points lie on the loop, not in a cross-section (an oblique loop is an
-    // ellipse): the paper's midpoints of opposite points, which a straight tube puts on its
-    // axis exactly, however obliquely it is cut.
+    // ellipse). The paper's midpoints of opposite points put a straight tube's centre on its axis
+    // when the loop is planar, but not when it is a saddle (a pipe meeting a curved face
+    // obliquely: quarter arc lengths are not quarter turns). So: across the axis, the centre of
+    // the circle through the points seen along it (exact for any straight circular tube); along
+    // it, the plane through the points' mean with the normal of the quadrilateral's diagonals,
+    // which is the loop's own plane when the loop is planar.
     gp_XYZ mean(0, 0, 0);
     for (const GeneratorPoint& q : g) mean += q.p.XYZ() / 4;
-    return describe(g, gp_Pnt(mean), mean_tangent(g));
+    const gp_Vec tangent = mean_tangent(g);
+    gp_Pnt centre = circle_centre(g, tangent);
+    const gp_Vec normal = gp_Vec(g[0].p, g[2].p).Crossed(gp_Vec(g[1].p, g[3].p));
+    const double across = normal.Dot(tangent);
+    if (std::abs(across) > 1e-3 * normal.Magnitude())
+        centre.Translate(tangent * (gp_Vec(centre, gp_Pnt(mean)).Dot(normal) / across));
+    return describe(g, centre, tangent);
 }
 
 // The cross-section through line 0's point at sigma0. `sigmas` carries lines 1-3's fractions

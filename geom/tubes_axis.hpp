@@ -51,8 +51,9 @@ public:
     double length() const { return (lengths_[0] + lengths_[1] + lengths_[2] + lengths_[3]) / 4; }
 
     // segments + 1 samples evenly spaced by the centre line's arc length. The first and last
-    // are the centres of the end loops (the mean of the four lines' end points, two opposite
-    // pairs), which lie in the loops' planes when the loops are planar.
+    // are the centres of the end loops (across the axis, the circle through the four lines' end
+    // points seen along it; along it, the points' mean plane), which lie in the loops' planes
+    // when the loops are planar and on the axis of a straight tube however its ends are cut.
     std::vector<AxisSample> stations(int segments) const;
     // Samples along the centre line, about one per diameter and denser in bends (no chord
     // more than 1% of the radius off the axis); all but the first and last are true

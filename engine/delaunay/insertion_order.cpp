@@ -1,0 +1,172 @@
+#include "engine/delaunay/insertion_order.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <utility>
+
+#include <tbb/parallel_for.h>
+
+namespace tubemesh::delaunay {
+namespace {
+
+constexpr int kGridBits = 16;           // 65536 cells per axis: ample for 1e9 points
+constexpr index_t kSmallestRound = 512;  // the first round holds at least about this many points
+
+std::uint64_t spread_bits(std::uint64_t v) {  // 21 bits -> every third bit of 63
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+}
+
+std::uint64_t splitmix64(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+struct Keyed {
+    std::uint64_t key;
+    index_t id;
+};
+
+// Stable LSD radix sort on the top `bits` of the 48-bit keys, 8 bits per pass. Chunks count
+// and scatter in parallel; chunk order keeps it stable, so equal keys keep id order and the
+// result does not depend on the thread count.
+void radix_sort(std::span<Keyed> a, std::span<Keyed> tmp, int bits) {
+    const std::size_t n = a.size();
+    if (n < 2) return;
+    const std::size_t chunks = std::clamp<std::size_t>(n / 32768, 1, 64);
+    const auto chunk_begin = [&](std::size_t c) { return n * c / chunks; };
+    std::vector<std::array<std::size_t, 256>> count(chunks);
+    Keyed* src = a.data();
+    Keyed* dst = tmp.data();
+    for (int shift = 3 * kGridBits - bits; shift < 3 * kGridBits; shift += 8) {
+        const auto digit = [shift](const Keyed& k) { return static_cast<std::size_t>((k.key >> shift) & 0xff); };
+        tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+            count[c].fill(0);
+            for (std::size_t i = chunk_begin(c); i < chunk_begin(c + 1); ++i) ++count[c][digit(src[i])];
+        });
+        std::size_t first_digit_total = 0;
+        for (std::size_t c = 0; c < chunks; ++c) first_digit_total += count[c][digit(src[0])];
+        if (first_digit_total == n) continue;  // all in one bucket
+        std::size_t sum = 0;
+        for (std::size_t d = 0; d < 256; ++d)
+            for (std::size_t c = 0; c < chunks; ++c) sum += std::exchange(count[c][d], sum);
+        tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+            for (std::size_t i = chunk_begin(c); i < chunk_begin(c + 1); ++i) dst[count[c][digit(src[i])]++] = src[i];
+        });
+        std::swap(src, dst);
+    }
+    if (src != a.data()) std::copy(src, src + n, a.data());
+}
+
+}  // namespace
+
+// Skilling, "Programming the Hilbert curve" (AIP Conf. Proc. 707, 2004): axes to transposed
+// Hilbert index, then the transposed bits interleaved into one integer.
+std::uint64_t hilbert_key(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz, int bits) {
+    std::uint32_t X[3] = {ix, iy, iz};
+    const std::uint32_t m = 1u << (bits - 1);
+    // Branch-free form of "if bit q of X[i]: invert the low bits of X[0], else exchange the
+    // low bits of X[0] and X[i]" (random points make those branches unpredictable).
+    for (std::uint32_t q = m; q > 1; q >>= 1) {
+        const std::uint32_t p = q - 1;
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t set = 0u - ((X[i] & q) != 0);
+            const std::uint32_t t = (X[0] ^ X[i]) & p & ~set;
+            X[0] ^= (p & set) | t;
+            X[i] ^= t;
+        }
+    }
+    X[1] ^= X[0];
+    X[2] ^= X[1];
+    std::uint32_t t = 0;
+    for (std::uint32_t q = m; q > 1; q >>= 1) t ^= (q - 1) & (0u - ((X[2] & q) != 0));
+    for (auto& c : X) c ^= t;
+    return spread_bits(X[0]) << 2 | spread_bits(X[1]) << 1 | spread_bits(X[2]);
+}
+
+std::uint64_t InsertionOrder::key_of(double x, double y, double z) const {
+    const double cells = double(1u << kGridBits);
+    const auto cell = [&](double v, int a) {
+        const double c = std::floor((v - grid_lo[a]) * grid_scale);
+        return static_cast<std::uint32_t>(std::clamp(c, 0.0, cells - 1));
+    };
+    return hilbert_key(cell(x, 0), cell(y, 1), cell(z, 2), kGridBits);
+}
+
+InsertionOrder brio_hilbert_order(std::span<const double> x, std::span<const double> y,
+                                  std::span<const double> z) {
+    const std::size_t n = x.size();
+    InsertionOrder out;
+    if (n == 0) {
+        out.round_begin = {0};
+        return out;
+    }
+
+    // Round of each point: P(round from the end >= k) = 8^-k, capped so the first is not tiny.
+    int last = 0;
+    for (std::size_t s = n; s >= 8 * std::size_t{kSmallestRound}; s /= 8) ++last;
+    std::vector<std::uint8_t> round(n);
+    std::vector<index_t> count(last + 2, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const int from_end = std::min(std::countl_zero(splitmix64(i) | 1) / 3, last);
+        round[i] = static_cast<std::uint8_t>(last - from_end);
+        ++count[round[i] + 1];
+    }
+    for (int r = 0; r <= last; ++r) count[r + 1] += count[r];
+    out.round_begin = count;
+
+    // Quantise on a cube so the curve is not stretched along a long axis.
+    double lo[3] = {x[0], y[0], z[0]}, hi[3] = {x[0], y[0], z[0]};
+    for (std::size_t i = 0; i < n; ++i) {
+        const double p[3] = {x[i], y[i], z[i]};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], p[a]);
+            hi[a] = std::max(hi[a], p[a]);
+        }
+    }
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    for (int a = 0; a < 3; ++a) out.grid_lo[a] = lo[a];
+    out.grid_scale = extent > 0 ? double(1u << kGridBits) / extent : 0.0;
+
+    std::vector<Keyed> keyed(n);
+    {
+        std::vector<index_t> fill(count.begin(), count.end() - 1);
+        for (std::size_t i = 0; i < n; ++i) keyed[fill[round[i]]++].id = static_cast<index_t>(i);
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+            const index_t i = keyed[k].id;
+            keyed[k].key = out.key_of(x[i], y[i], z[i]);
+        }
+    });
+
+    out.order.resize(n);
+    out.key.resize(n);
+    std::vector<Keyed> tmp(n);
+    for (int r = 0; r <= last; ++r) {
+        const index_t b = out.round_begin[r], e = out.round_begin[r + 1];
+        // A round of m points needs about log2(m) + 6 key bits to order its neighbourhoods.
+        const int need = std::bit_width(std::uint64_t{e - b}) + 6;
+        radix_sort(std::span(keyed).subspan(b, e - b), tmp, std::min(3 * kGridBits, (need + 7) / 8 * 8));
+        const bool backwards = r % 2 == 1;
+        tbb::parallel_for(tbb::blocked_range<index_t>(0, e - b, 16384), [&](const tbb::blocked_range<index_t>& k) {
+            for (index_t i = k.begin(); i < k.end(); ++i) {
+                const Keyed& from = keyed[backwards ? e - 1 - i : b + i];
+                out.order[b + i] = from.id;
+                out.key[b + i] = from.key;
+            }
+        });
+    }
+    return out;
+}
+
+}  // namespace tubemesh::delaunay

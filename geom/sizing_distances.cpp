@@ -11,46 +11,15 @@
 #include <cmath>
 #include <set>
 
+#include "engine/mesh/vec3_ops.hpp"
 #include "geom/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {
 
-using P = std::array<double, 3>;
-
-P sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-// Closest distance between segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection
-// 5.1.9), degenerate segments included.
+// Closest distance between segments p0-p1 and q0-q1, degenerate segments included.
 double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
-    const P d1 = sub(p1, p0), d2 = sub(q1, q0), r = sub(p0, q0);
-    const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
-    double s = 0, t = 0;
-    if (a <= 1e-300 && e <= 1e-300) {
-        s = t = 0;
-    } else if (a <= 1e-300) {
-        t = std::clamp(f / e, 0.0, 1.0);
-    } else {
-        const double c = dot(d1, r);
-        if (e <= 1e-300) {
-            s = std::clamp(-c / a, 0.0, 1.0);
-        } else {
-            const double b = dot(d1, d2), denom = a * e - b * b;
-            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-            t = (b * s + f) / e;
-            if (t < 0) {
-                t = 0;
-                s = std::clamp(-c / a, 0.0, 1.0);
-            } else if (t > 1) {
-                t = 1;
-                s = std::clamp((b - c) / a, 0.0, 1.0);
-            }
-        }
-    }
-    P d{};
-    for (int i = 0; i < 3; ++i) d[i] = r[i] + d1[i] * s - d2[i] * t;
-    return std::sqrt(dot(d, d));
+    return std::sqrt(segment_segment_distance2(p0, p1, q0, q1));
 }
 
 // Bounding boxes of runs of segments, so most segment pairs are never looked at.

@@ -1,6 +1,6 @@
 #pragma once
-// Floating-point vector helpers and the distances the suitability criteria measure
-// (point-triangle, segment-segment), plus axis-aligned boxes used to skip far-away pairs
+// The distances the suitability criteria measure (point-triangle here; segment-segment and
+// the Vec3 arithmetic in engine/mesh/vec3_ops.hpp), plus axis-aligned boxes used to skip far-away pairs
 // before any distance or exact test. Inline: they run in the innermost loops.
 //
 // These are *measurements* in double, compared against thresholds of the order of h: a
@@ -9,20 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/mesh/hybrid_mesh.hpp"  // Vec3
+#include "engine/mesh/vec3_ops.hpp"  // Vec3 arithmetic, segment_segment_distance2
 
 namespace tubemesh::pyramids {
-
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline double norm2(const Vec3& a) { return dot(a, a); }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-inline double distance2(const Vec3& a, const Vec3& b) { return norm2(a - b); }
 
 struct Box {
     Vec3 lo{}, hi{};
@@ -97,36 +86,6 @@ inline double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3&
     }
     const double v = vb / denom, w = vc / denom;
     return distance2(p, a + v * ab + w * ac);
-}
-
-// Squared distance between the closed segments p1q1 and p2q2 (Ericson 5.1.9), with the
-// degenerate (point-like and parallel) cases handled by clamping.
-inline double segment_segment_distance2(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
-    const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-    const double a = norm2(d1), e = norm2(d2), f = dot(d2, r);
-    double s = 0, t = 0;
-    if (a <= 0 && e <= 0) return norm2(r);
-    if (a <= 0) {
-        t = std::clamp(f / e, 0.0, 1.0);
-    } else {
-        const double c = dot(d1, r);
-        if (e <= 0) {
-            s = std::clamp(-c / a, 0.0, 1.0);
-        } else {
-            const double b = dot(d1, d2);
-            const double denom = a * e - b * b;
-            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-            t = (b * s + f) / e;
-            if (t < 0) {
-                t = 0;
-                s = std::clamp(-c / a, 0.0, 1.0);
-            } else if (t > 1) {
-                t = 1;
-                s = std::clamp((b - c) / a, 0.0, 1.0);
-            }
-        }
-    }
-    return distance2(p1 + s * d1, p2 + t * d2);
 }
 
 }  // namespace tubemesh::pyramids

@@ -1,4 +1,5 @@
 #include "engine/quality/quality.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -17,12 +18,6 @@ namespace {
 // Small vector algebra. Closed-form 3x3 only: an Eigen decomposition per corner would cost
 // compile time and run time for nothing.
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double norm2(const Vec3& a) { return dot(a, a); }
 
 // det[e1 e2 e3] = e1 · (e2 × e3): positive when (e1, e2, e3) is right-handed.
 double det3(const Vec3& e1, const Vec3& e2, const Vec3& e3) { return dot(e1, cross(e2, e3)); }
@@ -84,11 +79,11 @@ constexpr std::array<std::array<std::uint8_t, 4>, 4> kPyramidTets{{{0, 1, 2, 4},
 // The determinant is the same (6 V) at every corner of a tet, so only the length products
 // differ. Verdict's tet scaled Jacobian is this times sqrt(2) (1 for the regular tet).
 double tet_min_corner_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    const double ab = norm2(sub(b, a)), ac = norm2(sub(c, a)), ad = norm2(sub(d, a));
-    const double bc = norm2(sub(c, b)), bd = norm2(sub(d, b)), cd = norm2(sub(d, c));
+    const double ab = norm2(b - a), ac = norm2(c - a), ad = norm2(d - a);
+    const double bc = norm2(c - b), bd = norm2(d - b), cd = norm2(d - c);
     const std::array<double, 4> lengths{std::sqrt(ab * ac * ad), std::sqrt(ab * bc * bd),
                                         std::sqrt(ac * bc * cd), std::sqrt(ad * bd * cd)};
-    const double det = det3(sub(b, a), sub(c, a), sub(d, a));
+    const double det = det3(b - a, c - a, d - a);
     double ratio = kInfinity;
     for (double l : lengths) ratio = std::min(ratio, l > 0 ? det / l : 0.0);
     return ratio;
@@ -205,10 +200,10 @@ MeasureSummary summarize(const std::vector<double>& values, double lo, double hi
 // minimum over the vertices is at the largest face when V > 0 and at the smallest one when
 // V < 0 (the most negative value), so only one face area is needed.
 double tet_collapse(const std::array<Vec3, 4>& p) {
-    const Vec3 e1 = sub(p[1], p[0]), e2 = sub(p[2], p[0]), e3 = sub(p[3], p[0]);
+    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
     const double three_volume = 0.5 * det3(e1, e2, e3);
     // Four times the squared face areas, face i opposite vertex i.
-    const std::array<double, 4> area4{norm2(cross(sub(p[2], p[1]), sub(p[3], p[1]))), norm2(cross(e2, e3)),
+    const std::array<double, 4> area4{norm2(cross(p[2] - p[1], p[3] - p[1])), norm2(cross(e2, e3)),
                                       norm2(cross(e1, e3)), norm2(cross(e1, e2))};
     const auto [smallest, largest] = std::minmax_element(area4.begin(), area4.end());
     const double area = 0.5 * std::sqrt(three_volume < 0 ? *smallest : *largest);
@@ -221,7 +216,7 @@ double tet_collapse(const std::array<Vec3, 4>& p) {
 HexQuality hex_quality(const std::array<Vec3, 8>& p) {
     HexQuality q{kInfinity, 0.0};
     for (const auto& c : kHexCorners) {
-        const Vec3 e1 = sub(p[c[1]], p[c[0]]), e2 = sub(p[c[2]], p[c[0]]), e3 = sub(p[c[3]], p[c[0]]);
+        const Vec3 e1 = p[c[1]] - p[c[0]], e2 = p[c[2]] - p[c[0]], e3 = p[c[3]] - p[c[0]];
         q.scaled_jacobian = std::min(q.scaled_jacobian, corner_scaled_jacobian(e1, e2, e3));
         q.condition = std::max(q.condition, corner_condition(e1, e2, e3));
     }

@@ -1,4 +1,5 @@
 #include "engine/surface/frontal_refinement.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +11,6 @@ namespace {
 constexpr double kSqrt3 = 1.7320508075688772;
 constexpr double kUnbounded = 1e30;  // ratio of a flat triangle: first in line, never accepted
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double norm(const Vec3& a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 
 bool before(const auto& x, const auto& y) {  // max-heap on ratio, ties by slot: deterministic
     return x.ratio < y.ratio || (x.ratio == y.ratio && x.triangle > y.triangle);
@@ -33,7 +29,7 @@ bool singular(const Metric2& m) { return m.a * m.c - m.b * m.b <= 1e-8 * (m.a + 
 double FrontalRefiner::radius_ratio(const UvMesh& mesh, index_t t) const {
     const index_t a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
     const double h = (mesh.size[a] + mesh.size[b] + mesh.size[c]) / 3;
-    const Vec3 ab = sub(mesh.xyz[b], mesh.xyz[a]), bc = sub(mesh.xyz[c], mesh.xyz[b]), ca = sub(mesh.xyz[a], mesh.xyz[c]);
+    const Vec3 ab = mesh.xyz[b] - mesh.xyz[a], bc = mesh.xyz[c] - mesh.xyz[b], ca = mesh.xyz[a] - mesh.xyz[c];
     const bool at_pole = singular(mesh.metric[a]) || singular(mesh.metric[b]) || singular(mesh.metric[c]);
     const bool repeated = mesh.node[a] == mesh.node[b] || mesh.node[b] == mesh.node[c] || mesh.node[c] == mesh.node[a];
     // Next to a pole, space is the only measure: a triangle on a pole's degenerate edge is a
@@ -71,7 +67,7 @@ int FrontalRefiner::front_edge(const UvMesh& mesh, index_t t) const {
     for (int i = 0; i < 3; ++i) {
         const index_t n = mesh.neighbor(t, i);
         if (!mesh.constrained(t, i) && !(n != kNoIndex && mesh.inside(n) && mesh.accepted(n))) continue;
-        const double len = norm(sub(mesh.xyz[mesh.vertex(t, next3(i))], mesh.xyz[mesh.vertex(t, prev3(i))]));
+        const double len = norm((mesh.xyz[mesh.vertex(t, next3(i))] - mesh.xyz[mesh.vertex(t, prev3(i))]));
         if (best < 0 || len < best_len) best = i, best_len = len;
     }
     return best;

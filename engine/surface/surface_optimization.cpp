@@ -1,4 +1,5 @@
 #include "engine/surface/surface_optimization.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,15 +10,10 @@ namespace tubemesh::surface {
 
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 
 // The largest cosine among the triangle's angles: the smallest angle, without an acos.
 double max_cosine(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = sub(b, a), bc = sub(c, b), ca = sub(a, c);
+    const Vec3 ab = b - a, bc = c - b, ca = a - c;
     const double lab = std::sqrt(dot(ab, ab)), lbc = std::sqrt(dot(bc, bc)), lca = std::sqrt(dot(ca, ca));
     if (!(lab > 0 && lbc > 0 && lca > 0)) return 1.0;
     const double ca_ = -dot(ca, ab) / (lca * lab), cb = -dot(ab, bc) / (lab * lbc), cc = -dot(bc, ca) / (lbc * lca);
@@ -35,8 +31,8 @@ constexpr double kGradingRatio = 1.4;
 constexpr double kGradingCosine = 0.8191520442889918;  // cos 35°
 
 double mean_edge(const Vec3& a, const Vec3& b, const Vec3& c) {
-    return (std::sqrt(dot(sub(b, a), sub(b, a))) + std::sqrt(dot(sub(c, b), sub(c, b))) +
-            std::sqrt(dot(sub(a, c), sub(a, c)))) / 3;
+    return (std::sqrt(dot(b - a, b - a)) + std::sqrt(dot(c - b, c - b)) +
+            std::sqrt(dot(a - c, a - c))) / 3;
 }
 
 // The size ratio reported around a vertex next to a pole: never improved on, so never moved.
@@ -157,7 +153,7 @@ bool SurfaceOptimizer::try_smooth(const SurfaceMap& surface, UvMesh& mesh, index
         const Vec3 &p = x[ring_[j]], &q = x[ring_[(j + 1) % n]];
         centroid = {centroid.x + p.x, centroid.y + p.y, centroid.z + p.z};
         if (mesh.node[ring_[j]] == mesh.node[ring_[(j + 1) % n]]) continue;  // a pole's: no edge in space
-        const Vec3 e = sub(q, p);
+        const Vec3 e = q - p;
         const Vec3 side = cross(normal, e);  // in the tangent plane, towards v (counter-clockwise fan)
         const double len_side = std::sqrt(dot(side, side)), len_e = std::sqrt(dot(e, e));
         if (!(len_side > 0)) return false;
@@ -174,7 +170,7 @@ bool SurfaceOptimizer::try_smooth(const SurfaceMap& surface, UvMesh& mesh, index
     Vec3 best_x = x[v];
     for (const Vec3& target : targets) {
         Uv step;
-        if (!tangent_step(d, sub(target, x[v]), step)) continue;
+        if (!tangent_step(d, target - x[v], step)) continue;
         const Uv uv{mesh.uv[v].u + step.u, mesh.uv[v].v + step.v};
         bool valid = true;
         for (std::size_t j = 0; j < n && valid; ++j)
@@ -244,8 +240,8 @@ index_t SurfaceOptimizer::collapse_sweep(index_t first_movable, UvMesh& mesh) {
         if (mesh.dead(t) || !mesh.inside(t) || quality_[t] <= kCollapseBelow) continue;
         const index_t a = mesh.vertex(t, 0), b = mesh.vertex(t, 1), c = mesh.vertex(t, 2);
         // The shortest edge of a bad triangle is the one a collapse can remove.
-        const double lab = dot(sub(x[b], x[a]), sub(x[b], x[a])), lbc = dot(sub(x[c], x[b]), sub(x[c], x[b]));
-        const double lca = dot(sub(x[a], x[c]), sub(x[a], x[c]));
+        const double lab = dot(x[b] - x[a], x[b] - x[a]), lbc = dot(x[c] - x[b], x[c] - x[b]);
+        const double lca = dot(x[a] - x[c], x[a] - x[c]);
         index_t p = a, q = b;
         if (lbc <= lab && lbc <= lca) p = b, q = c;
         else if (lca <= lab && lca <= lbc) p = c, q = a;
@@ -289,9 +285,9 @@ bool SurfaceOptimizer::try_grade(const SurfaceMap& surface, UvMesh& mesh, index_
     if (a == kNoIndex) {
         for (index_t r : ring_) goal = {goal.x + x[r].x / n, goal.y + x[r].y / n, goal.z + x[r].z / n};
     } else {
-        const Vec3 e = sub(x[b], x[a]), mid{0.5 * (x[a].x + x[b].x), 0.5 * (x[a].y + x[b].y), 0.5 * (x[a].z + x[b].z)};
+        const Vec3 e = x[b] - x[a], mid{0.5 * (x[a].x + x[b].x), 0.5 * (x[a].y + x[b].y), 0.5 * (x[a].z + x[b].z)};
         Vec3 side = cross(cross(d.du, d.dv), e);
-        if (dot(side, sub(x[v], mid)) < 0) side = {-side.x, -side.y, -side.z};
+        if (dot(side, x[v] - mid) < 0) side = {-side.x, -side.y, -side.z};
         const double len_side = std::sqrt(dot(side, side));
         if (!(len_side > 0)) return false;
         const double s = 0.8660254037844386 * std::sqrt(dot(e, e)) / len_side;
@@ -303,7 +299,7 @@ bool SurfaceOptimizer::try_grade(const SurfaceMap& surface, UvMesh& mesh, index_
     for (const double w : {1.0, 0.5}) {
         Uv step;
         const Vec3 target{x[v].x + w * (goal.x - x[v].x), x[v].y + w * (goal.y - x[v].y), x[v].z + w * (goal.z - x[v].z)};
-        if (!tangent_step(d, sub(target, x[v]), step)) continue;
+        if (!tangent_step(d, target - x[v], step)) continue;
         const Uv uv{mesh.uv[v].u + step.u, mesh.uv[v].v + step.v};
         bool valid = true;
         for (std::size_t j = 0; j < n && valid; ++j)

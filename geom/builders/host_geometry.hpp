@@ -3,6 +3,7 @@
 // normals, used to place pipes and check their clearances without OpenCASCADE.
 #include <optional>
 
+#include "engine/mesh/vec3_ops.hpp"  // Vec3 arithmetic shared with the engine
 #include "geom/builders/block_spec.hpp"
 
 namespace tubemesh::geom {
@@ -16,13 +17,7 @@ double signed_boundary_distance(const HostSpec& host, const Vec3& p);
 // edge gets the normal of the first face found; presets keep pipe ends away from edges.
 std::optional<Vec3> boundary_normal(const HostSpec& host, const Vec3& p, double tol);
 
-// Small vector helpers shared by the builders.
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(const Vec3& a, const Vec3& b);
-Vec3 cross(const Vec3& a, const Vec3& b);
-double norm(const Vec3& a);
+// Unit vector along a (a must not be zero).
 Vec3 normalized(const Vec3& a);
 
 }  // namespace tubemesh::geom

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <unordered_set>
 
@@ -21,14 +23,100 @@ std::string join(const std::vector<int>& ids) {
     return s;
 }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string source_text(const std::string& source) { return source == "user" ? "given" : source; }
+
+// Given sizes are honoured or refused (prepare.hpp).
+void refuse_contradictory_sizes(const SizePlan& plan, const SizingOptions& given, bool has_tubes) {
+    if (!has_tubes) return;
+    if (given.sweep_size > 0 && plan.sweep_size < given.sweep_size && !plan.changes.empty()) {
+        const SizeChange& c = plan.changes.front();
+        throw Error(fmt::format(
+            "the sweep size St = {:.6g} is too large for this model: rule {} ({}); give St = {:.6g} or less, or "
+            "leave St out to let tubemesh choose",
+            given.sweep_size, c.rule, c.reason, plan.sweep_size));
+    }
+    if (!(plan.sweep_size < plan.size))
+        throw Error(fmt::format("contradictory sizes: the sweep size St = {:.6g} ({}) must be smaller than the mesh "
+                                "size S = {:.6g} ({}); give a larger S or a smaller St",
+                                plan.sweep_size, source_text(plan.sweep_source), plan.size,
+                                source_text(plan.size_source)));
+}
+
+std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan, const SizingOptions& given) {
+    std::vector<std::string> w;
+    if (tubes.tubes.empty())
+        w.push_back("no tubular hole found in the solid: no hex rings or pyramids, the volume is meshed with "
+                    "tetrahedra only");
+    if (given.size > 0 && plan.size < given.size && !plan.changes.empty())
+        w.push_back(fmt::format("the mesh size S = {:.6g} was lowered to {:.6g} = 1.3 St by rule {} ({})", given.size,
+                                plan.size, plan.changes.back().rule, plan.changes.back().reason));
+    for (const std::string& x : plan.warnings) w.push_back(x);
+    return w;
+}
+
 }  // namespace
 
+PrepareOptions prepare_options(const MeshOptions& options) {
+    PrepareOptions p;
+    p.sizing.size = options.size;
+    p.sizing.sweep_size = options.sweep_size;
+    p.discretize.ring_nodes = options.circumferential;
+    p.progress = options.progress;
+    return p;
+}
+
 PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
+    if (options.discretize.ring_nodes < 0 || options.discretize.ring_nodes == 1 || options.discretize.ring_nodes == 2)
+        throw Error(fmt::format("the number of nodes around a tube must be at least 3 (4 or more recommended), got {}",
+                                options.discretize.ring_nodes));
     PreparedModel p;
-    p.tubes = find_tubes(model, options.tubes);
-    p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
-    p.geometry = discretize(model, p.tubes.tubes, p.plan);
-    p.maps = make_surface_maps(model);
+    auto t0 = Clock::now();
+    {
+        PhaseProgress progress(options.progress, "tubes", 1);
+        p.tubes = find_tubes(model, options.tubes);
+        progress.finish();
+    }
+    p.phases.push_back({"tubes", seconds_since(t0),
+                        {{"faces", double(model.face_count())},
+                         {"tubes", double(p.tubes.tubes.size())},
+                         {"not tubes", double(p.tubes.rejected.size())}},
+                        {}});
+
+    t0 = Clock::now();
+    {
+        PhaseProgress progress(options.progress, "sizes", 1);
+        p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
+        refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
+        progress.finish();
+    }
+    PhaseReport sizes{"sizes", seconds_since(t0), {{"rule changes", double(p.plan.changes.size())}}, {}};
+    sizes.statistics = {{"S", p.plan.size}};
+    if (!p.tubes.tubes.empty()) sizes.statistics.push_back({"St", p.plan.sweep_size});
+    p.phases.push_back(std::move(sizes));
+    p.warnings = plan_warnings(p.tubes, p.plan, options.sizing);
+
+    t0 = Clock::now();
+    {
+        PhaseProgress progress(options.progress, "discretize", 1);
+        p.geometry = discretize(model, p.tubes.tubes, p.plan, options.discretize);
+        p.maps = make_surface_maps(model);
+        progress.finish();
+    }
+    std::size_t edge_points = 0, stations = 0;
+    for (const EdgePolyline& e : p.geometry.edges) edge_points += e.points.size();
+    for (const TubeData& t : p.geometry.tubes) stations += t.stations.size();
+    PhaseReport disc{"discretize", seconds_since(t0), {}, {}};
+    disc.counts = {{"edges", double(p.geometry.edges.size())},
+                   {"edge points", double(edge_points)},
+                   {"tube stations", double(stations)}};
+    std::size_t around = 0;  // n: the same for every tube unless the radii differ a lot
+    for (const TubeData& t : p.geometry.tubes) around = around ? std::min(around, t.ring1.size()) : t.ring1.size();
+    if (around) disc.counts.push_back({"nodes around (fewest)", double(around)});
+    p.phases.push_back(std::move(disc));
     return p;
 }
 

@@ -3,6 +3,12 @@
 // S / St) -> discretize -> one SurfaceMap per face. The PreparedModel owns all of it (the
 // maps keep their own handles to the geometry, so it does not need the Model afterwards).
 //
+// Sizes the user gave are honoured or refused, never silently replaced: prepare_model throws
+// when the paper's rules would have to cut a given St (the message names the rule, the
+// tubes or faces involved and the largest St allowed), and when St is not below S (whether
+// each came from the user or from a default). S given alone may still be lowered to 1.3 St
+// when the rules cut the default St; that change is in report_lines() and the warnings.
+//
 // No OpenCASCADE header here.
 #include <memory>
 #include <string>
@@ -11,6 +17,7 @@
 #include "engine/geometry/surface_map.hpp"
 #include "engine/geometry/tube_data.hpp"
 #include "engine/pipeline/pipeline.hpp"
+#include "geom/discretize.hpp"
 #include "geom/model.hpp"
 #include "geom/sizing.hpp"
 #include "geom/tubes.hpp"
@@ -20,7 +27,12 @@ namespace tubemesh::geom {
 struct PrepareOptions {
     SizingOptions sizing;  // S and St; 0 picks geom's defaults (sizing.hpp)
     TubeOptions tubes;
+    DiscretizeOptions discretize;  // ring_nodes = n; 0 picks ring_node_count per tube
+    ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
 };
+
+// The user-facing part of MeshOptions (S, St, n, progress) as PrepareOptions.
+PrepareOptions prepare_options(const MeshOptions& options);
 
 class PreparedModel {
 public:
@@ -28,6 +40,10 @@ public:
     SizePlan plan;
     DiscreteGeometry geometry;
     std::vector<std::unique_ptr<SurfaceMap>> maps;  // element i: face id i + 1
+    std::vector<PhaseReport> phases;                // "tubes", "sizes", "discretize"
+    // What the user should be told: no tube found, S lowered by the rules, the plan's own
+    // warnings. One line each.
+    std::vector<std::string> warnings;
 
     // Refers to this object: valid while it lives and is not moved.
     PipelineInput pipeline_input() const;

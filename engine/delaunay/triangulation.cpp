@@ -105,6 +105,8 @@ KernelCounters& KernelCounters::operator+=(const KernelCounters& o) {
     tets_created += o.tets_created;
     passes += o.passes;
     serial_inserted += o.serial_inserted;
+    blocked += o.blocked;
+    shrunk += o.shrunk;
     seconds_passes += o.seconds_passes;
     seconds_serial += o.seconds_serial;
     return *this;
@@ -124,6 +126,7 @@ struct alignas(64) Triangulation::Part {
     std::vector<index_t> points;  // positions in the pass's point list
     std::vector<index_t> failed;  // positions postponed to the next pass
     std::vector<std::pair<index_t, index_t>> duplicates;
+    std::vector<index_t> blocked;  // constrained mode: points skipped for good
     std::int64_t net_slots = 0;  // slots taken minus slots freed
     KernelCounters counters;
 
@@ -140,6 +143,7 @@ struct Triangulation::Scratch {
     std::vector<BoundaryFace> boundary;
     std::vector<index_t> extra;
     std::vector<index_t> boundary_vertices;
+    std::vector<index_t> kept;  // constrained mode: the cavity while it is shrunk, sorted
     // edge_face[la * count + lb], count = the cavity's boundary vertex count: face code of the
     // new tet whose face holds the directed boundary edge a->b. Never cleared: every entry
     // read was written for the same cavity.
@@ -169,6 +173,7 @@ index_t Triangulation::add_points(std::span<const double> xyz, std::span<const i
     global_.insert(global_.end(), global_ids.begin(), global_ids.end());
     local_.resize(global_.size(), kNoIndex);
     owner_.resize(global_.size());
+    if (constrained_) seed_.resize(global_.size(), kNoIndex);
     note_memory();
     return first;
 }
@@ -250,7 +255,7 @@ bool Triangulation::ghost_in_conflict(index_t tet, const double* pp, index_t p) 
 // other part (that part may rewrite the face's adjacency slot and the tet behind it). Every
 // other face's slot, and every tet behind such a face, stays as it was during the pass.
 
-template <bool kParts>
+template <bool kParts, bool kFront>
 InsertStatus Triangulation::locate(index_t p, Part& part, index_t& tet, index_t& vertex) {
     const double* pp = point(p);
     // True when the face opposite local vertex f of v may be changed by another part.
@@ -267,19 +272,45 @@ InsertStatus Triangulation::locate(index_t p, Part& part, index_t& tet, index_t&
     index_t t = part.hint;
     unsigned from = 4;
     const std::uint64_t limit = std::uint64_t{tets_.size()} + 16;
+    [[maybe_unused]] bool restarted = false;
     for (std::uint64_t steps = 0;; ++steps) {
         const index_t* v = tets_.vertex(t);
         const double* c[4] = {point(v[0]), point(v[1]), point(v[2]), point(v[3])};
         const std::uint32_t r = part.random();
         unsigned exit = 4;
+        [[maybe_unused]] unsigned front_exit = 4;
         for (unsigned k = 0; k < 4; ++k) {
             const unsigned f = (r + k) & 3;
             if (f == from) continue;
             const double* q[4] = {c[0], c[1], c[2], c[3]};
             q[f] = pp;
             if (pred::orient3d_inline(q[0], q[1], q[2], q[3]) < 0) {
+                if constexpr (kFront) {
+                    // Prefer a way round a concave part of the front to running into it.
+                    if (tets_.neighbour(4 * t + f) == kNoAdjacent) {
+                        front_exit = f;
+                        continue;
+                    }
+                }
                 exit = f;
                 break;
+            }
+        }
+        if constexpr (kFront) {
+            if (exit == 4 && front_exit != 4) {
+                // p lies beyond a front face of t: outside the region, or the walk ran into a
+                // concave part of the front. A parallel part retries later; a serial walk
+                // starts once more from the tet the caller named near p.
+                tet = t;
+                if constexpr (kParts) return InsertStatus::Conflict;
+                const index_t seed = seed_[p];
+                if (restarted || seed == kNoIndex || seed >= tets_.size() || is_free(tets_.vertex(seed)))
+                    return InsertStatus::Blocked;
+                restarted = true;
+                t = seed;
+                from = 4;
+                steps = 0;
+                continue;
             }
         }
         if (exit == 4) break;
@@ -290,6 +321,14 @@ InsertStatus Triangulation::locate(index_t p, Part& part, index_t& tet, index_t&
         t = code >> 2;
         from = code & 3;
         ++part.counters.walk_steps;
+        if constexpr (kFront) {
+            // Off Delaunay meshes a visibility walk may circle; give the point up rather than fail.
+            if (steps > limit) {
+                tet = t;
+                return kParts ? InsertStatus::Conflict : InsertStatus::Blocked;
+            }
+            continue;
+        }
         if (is_ghost(tets_.vertex(t))) break;  // p is outside the hull, beyond this face
         if (steps > limit) throw Error("Delaunay: point location did not terminate (internal error)");
     }
@@ -386,13 +425,20 @@ void Triangulation::link_new_tets(Scratch& s) {
 // ---------------------------------------------------------------------------------------
 // Bowyer-Watson insertion of one point.
 
-template <bool kParts>
+template <bool kParts, bool kFront>
 InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
     index_t start = kNoIndex, same = kNoIndex;
-    const InsertStatus located = locate<kParts>(p, part, start, same);
+    const InsertStatus located = locate<kParts, kFront>(p, part, start, same);
     if (located == InsertStatus::Duplicate) {
         part.duplicates.emplace_back(p, same);
         return located;
+    }
+    if constexpr (kFront) {
+        if (located == InsertStatus::Blocked) {
+            part.blocked.push_back(p);
+            ++part.counters.blocked;
+            return located;
+        }
     }
     if (located != InsertStatus::Inserted) {
         ++part.counters.conflicts;
@@ -413,6 +459,12 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
         for (unsigned f = 0; f < 4; ++f) __builtin_prefetch(tets_.vertex(tets_.neighbour(4 * c + f) >> 2));
         for (unsigned f = 0; f < 4; ++f) {
             const index_t code = tets_.neighbour(4 * c + f);
+            if constexpr (kFront) {
+                if (code == kNoAdjacent) {  // a front face: the cavity stops here
+                    s.boundary.push_back({{cv[0] & ~kCavityMark, cv[1], cv[2], cv[3]}, code, f, c});
+                    continue;
+                }
+            }
             const index_t n = code >> 2;
             if (is_marked(tets_.vertex(n))) continue;
             if (in_conflict(n, pp, p)) {
@@ -427,8 +479,21 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
                 mark(tets_.vertex(n));
                 s.cavity.push_back(n);
             } else {
-                s.boundary.push_back({{cv[0] & ~kCavityMark, cv[1], cv[2], cv[3]}, code, f});
+                // slot: the cavity tet, for shrink_to_visible (overwritten below).
+                s.boundary.push_back({{cv[0] & ~kCavityMark, cv[1], cv[2], cv[3]}, code, f, kFront ? c : index_t{0}});
             }
+        }
+    }
+    if constexpr (kFront) {
+        if (!left_part) {
+            const std::size_t before = s.cavity.size();
+            if (!shrink_to_visible(p, start, s)) {
+                for (index_t c : s.cavity) unmark(tets_.vertex(c));
+                part.blocked.push_back(p);
+                ++part.counters.blocked;
+                return InsertStatus::Blocked;
+            }
+            if (s.cavity.size() != before) ++part.counters.shrunk;
         }
     }
 
@@ -459,7 +524,7 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
         if (!is_ghost(nv)) hint = b.slot;
         const index_t self = 4 * b.slot + b.face;
         tets_.neighbour(self) = b.outer;
-        tets_.neighbour(b.outer) = self;
+        if (!kFront || b.outer != kNoAdjacent) tets_.neighbour(b.outer) = self;
     }
     link_new_tets(s);
     for (std::size_t i = nb; i < nc; ++i) {
@@ -468,9 +533,93 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
     }
     part.hint = hint;
     part.net_slots += static_cast<std::int64_t>(nb) - static_cast<std::int64_t>(nc);
+#ifdef TUBEMESH_BENCH_SLOWDOWN
+    // Only for the test of the benchmark gate (CMake option TUBEMESH_BENCH_SLOWDOWN, off by
+    // default): redo some of the boundary's conflict tests, real work that makes an insertion
+    // about TUBEMESH_BENCH_SLOWDOWN percent slower in time and in instructions.
+    {
+        unsigned sink = 0;
+        const std::size_t redo = nb * TUBEMESH_BENCH_SLOWDOWN / 50;
+        for (std::size_t i = 0; i < redo; ++i) {
+            sink += in_conflict(s.boundary[i % nb].outer >> 2, pp, p);
+            asm volatile("" : "+r"(sink) : : "memory");
+        }
+    }
+#endif
     part.counters.tets_created += nb;
     ++part.counters.inserted;
     return InsertStatus::Inserted;
+}
+
+// ---------------------------------------------------------------------------------------
+// Constrained mode: taking over a mesh, and cavities made star-shaped.
+
+void Triangulation::adopt(std::span<const double> xyz, TetStore&& tets) {
+    if (started()) throw Error("Delaunay: adopt() on a triangulation that already has tets");
+    if (xyz.size() % 3 != 0) throw Error("Delaunay: adopt() needs 3 coordinates per point");
+    if (tets.size() == 0) throw Error("Delaunay: adopt() needs a mesh with at least one tetrahedron");
+    const auto n = static_cast<index_t>(xyz.size() / 3);
+    if (n >= kInfiniteVertex) throw Error("Delaunay: too many points for 32-bit ids");
+    constrained_ = true;
+    xyz_.assign(xyz.begin(), xyz.end());
+    global_.resize(n);
+    for (index_t v = 0; v < n; ++v) global_[v] = v;
+    local_.assign(n, kNoIndex);
+    owner_.assign(n, 0);
+    seed_.assign(n, kNoIndex);
+    tets_ = std::move(tets);
+    hint_ = 0;
+    note_memory();
+}
+
+// The new tet on boundary face b is the cavity tet with b's far vertex replaced by p: it has a
+// positive volume exactly when p sees b from inside the cavity. Shrinking drops the cavity tet
+// behind the first face p does not see and keeps what is still connected to `start`; every
+// round drops a tet, so it ends.
+bool Triangulation::shrink_to_visible(index_t p, index_t start, Scratch& s) {
+    const double* pp = point(p);
+    const auto sees = [&](const BoundaryFace& b) {
+        const double* q[4] = {point(b.v[0]), point(b.v[1]), point(b.v[2]), point(b.v[3])};
+        q[b.face] = pp;
+        return pred::orient3d_inline(q[0], q[1], q[2], q[3]) > 0;
+    };
+    for (;;) {
+        index_t drop = kNoIndex;
+        for (const BoundaryFace& b : s.boundary)
+            if (!sees(b)) {
+                drop = b.slot;
+                break;
+            }
+        if (drop == kNoIndex) return true;
+        if (drop == start) return false;
+        s.kept.clear();
+        for (index_t c : s.cavity) {
+            unmark(tets_.vertex(c));
+            if (c != drop) s.kept.push_back(c);
+        }
+        std::sort(s.kept.begin(), s.kept.end());
+        s.cavity.clear();
+        s.boundary.clear();
+        mark(tets_.vertex(start));
+        s.cavity.push_back(start);
+        for (std::size_t i = 0; i < s.cavity.size(); ++i) {
+            const index_t c = s.cavity[i];
+            const index_t* cv = tets_.vertex(c);
+            for (unsigned f = 0; f < 4; ++f) {
+                const index_t code = tets_.neighbour(4 * c + f);
+                if (code != kNoAdjacent) {
+                    const index_t n = code >> 2;
+                    if (is_marked(tets_.vertex(n))) continue;
+                    if (std::binary_search(s.kept.begin(), s.kept.end(), n)) {
+                        mark(tets_.vertex(n));
+                        s.cavity.push_back(n);
+                        continue;
+                    }
+                }
+                s.boundary.push_back({{cv[0] & ~kCavityMark, cv[1], cv[2], cv[3]}, code, f, c});
+            }
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -560,8 +709,12 @@ void Triangulation::insert_serial(std::span<const index_t> points) {
     part.growable = true;
     part.hint = hint_;
     Scratch& s = scratch_->local.local();
-    for (index_t p : points) insert_one<false>(p, part, s);
+    if (constrained_)
+        for (index_t p : points) insert_one<false, true>(p, part, s);
+    else
+        for (index_t p : points) insert_one<false, false>(p, part, s);
     free_.swap(part.free);
+    blocked_.insert(blocked_.end(), part.blocked.begin(), part.blocked.end());
     tets_.set_size(part.next);
     hint_ = part.hint;
     duplicates_.insert(duplicates_.end(), part.duplicates.begin(), part.duplicates.end());
@@ -581,7 +734,10 @@ index_t Triangulation::find_start(Part& part, index_t first_point, Scratch& s) {
     Part walker;
     walker.hint = hint_;
     index_t t = kNoIndex, same = kNoIndex;
-    locate<false>(first_point, walker, t, same);
+    if (constrained_)
+        locate<false, true>(first_point, walker, t, same);  // where the walk stopped, even if blocked
+    else
+        locate<false, false>(first_point, walker, t, same);
     if (is_ghost(tets_.vertex(t))) t = tets_.neighbour(4 * t + infinite_slot(tets_.vertex(t))) >> 2;
     // Breadth-first from there to the nearest owned tet.
     std::vector<index_t>& seen = s.cavity;
@@ -592,7 +748,9 @@ index_t Triangulation::find_start(Part& part, index_t first_point, Scratch& s) {
     for (std::size_t i = 0; i < seen.size() && i < 4096 && found == kNoIndex; ++i) {
         if (owns_tet(seen[i])) found = seen[i];
         for (unsigned f = 0; f < 4; ++f) {
-            const index_t n = tets_.neighbour(4 * seen[i] + f) >> 2;
+            const index_t code = tets_.neighbour(4 * seen[i] + f);
+            if (code == kNoAdjacent) continue;  // a front face (constrained mode)
+            const index_t n = code >> 2;
             if (is_marked(tets_.vertex(n)) || is_ghost(tets_.vertex(n))) continue;
             mark(tets_.vertex(n));
             seen.push_back(n);
@@ -673,7 +831,8 @@ std::vector<index_t> Triangulation::insert_pass(std::span<const index_t> points,
         }
         Scratch& s = scratch_->local.local();
         for (index_t i : pt.points) {
-            const InsertStatus st = insert_one<true>(points[i], pt, s);
+            const InsertStatus st = constrained_ ? insert_one<true, true>(points[i], pt, s)
+                                                 : insert_one<true, false>(points[i], pt, s);
             if (st == InsertStatus::Conflict || st == InsertStatus::NoRoom) pt.failed.push_back(i);
         }
     });
@@ -688,6 +847,7 @@ std::vector<index_t> Triangulation::insert_pass(std::span<const index_t> points,
         }
         free_.insert(free_.end(), pt.free.begin(), pt.free.end());
         duplicates_.insert(duplicates_.end(), pt.duplicates.begin(), pt.duplicates.end());
+        blocked_.insert(blocked_.end(), pt.blocked.begin(), pt.blocked.end());
         failed.insert(failed.end(), pt.failed.begin(), pt.failed.end());
         counters_ += pt.counters;
         net += pt.net_slots;

@@ -26,6 +26,16 @@
 //
 // Usage: add_points(), start(), insert() as often as wanted (every insert keeps the
 // triangulation Delaunay), finish() once to get the tets.
+//
+// Constrained mode (the tet step's refinement, paper §5): adopt() takes over a finished mesh
+// whose kNoAdjacent faces are a boundary (the front), with no ghosts. insert() then grows each
+// cavity only across faces that have a tet behind them, so a front face is never removed: it
+// becomes a face of a new tet. The mesh need not be Delaunay (after boundary recovery it is
+// not), so a cavity may not be star-shaped from its point; it is shrunk, tet by tet, until
+// every boundary face is seen from the point (every new tet has a positive volume), and the
+// point is skipped (InsertStatus::Blocked, listed in blocked()) when the tet holding it would
+// have to go, or when it lies outside the region. Parts, passes and determinism are as above.
+// The unconstrained path is a separate template instance and pays nothing for this.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -43,6 +53,7 @@ enum class InsertStatus : std::uint8_t {
     Duplicate,  // same coordinates as a vertex already in the triangulation: not inserted
     Conflict,   // walk or cavity needs another part's tets: retry in a later pass
     NoRoom,     // the part's slot quota is used up: retry in a later pass
+    Blocked,    // constrained mode: outside the region, on a front face, or its tet would go
 };
 
 struct KernelCounters {
@@ -54,6 +65,8 @@ struct KernelCounters {
     std::uint64_t tets_created = 0;
     std::uint64_t passes = 0;  // parallel passes
     std::uint64_t serial_inserted = 0;
+    std::uint64_t blocked = 0;   // constrained mode: points skipped (InsertStatus::Blocked)
+    std::uint64_t shrunk = 0;    // constrained mode: cavities shrunk to be star-shaped
     double seconds_passes = 0;  // wall time in parallel passes, set-up included
     double seconds_serial = 0;  // wall time of serial insertion
 
@@ -85,6 +98,18 @@ public:
     void set_curve_keys(std::vector<std::uint64_t> keys);
     void reserve_tets(std::size_t n) { tets_.reserve(n); }
 
+    // Constrained mode: takes over the points (kernel id = global id = position in `xyz`) and
+    // the tets of a finished mesh (positive tets, no free slots, kNoAdjacent on the boundary).
+    // Instead of start(); points added later get the ids the caller gives them.
+    void adopt(std::span<const double> xyz, TetStore&& tets);
+    bool constrained() const { return constrained_; }
+    // Constrained mode: a live tet near point v, where a serial walk to v starts again when the
+    // walk from the previous insertion runs into the front (non-convex regions).
+    void set_walk_start(index_t v, index_t tet) { seed_[v] = tet; }
+    // Constrained mode: kernel ids of the points skipped (InsertStatus::Blocked), in the order
+    // met (deterministic for a given part count).
+    const std::vector<index_t>& blocked() const { return blocked_; }
+
     // Makes the first tet from four affinely independent points among `candidates` (which
     // should be spread out, e.g. the first BRIO round). Returns the 4 kernel ids used, in
     // no particular order, or an empty vector when all candidates are coplanar.
@@ -113,10 +138,14 @@ public:
     struct Scratch;  // per-thread cavity buffers
 
 private:
-    template <bool kParts>
+    // kFront: constrained mode (cavities stop at kNoAdjacent faces and are made star-shaped).
+    template <bool kParts, bool kFront>
     InsertStatus insert_one(index_t p, Part& part, Scratch& s);
-    template <bool kParts>
+    template <bool kParts, bool kFront>
     InsertStatus locate(index_t p, Part& part, index_t& tet, index_t& vertex);
+    // Constrained mode: shrinks the cavity in `s` until p sees every boundary face; false when
+    // the tet `start` (holding p) would have to go.
+    bool shrink_to_visible(index_t p, index_t start, Scratch& s);
     bool in_conflict(index_t tet, const double* pp, index_t p) const;
     bool ghost_in_conflict(index_t tet, const double* pp, index_t p) const;
     int insphere_exact(const index_t* v, const double* pp, index_t p) const;  // with ties broken
@@ -141,6 +170,9 @@ private:
     index_t hint_ = kNoIndex;    // a live finite tet near the last insertion
     double growth_ = 7.0;        // new slots per inserted point, for part quotas
     std::vector<std::pair<index_t, index_t>> duplicates_;
+    bool constrained_ = false;
+    std::vector<index_t> seed_;     // constrained mode: set_walk_start() per vertex, or kNoIndex
+    std::vector<index_t> blocked_;  // constrained mode: skipped points
     KernelCounters counters_;
     std::size_t peak_bytes_ = 0;
     struct ScratchPool;

@@ -22,6 +22,12 @@ const char* stage_name(Stage s) {
     return "?";
 }
 
+std::optional<Stage> stage_from_name(std::string_view name) {
+    for (Stage s : kStages)
+        if (name == stage_name(s)) return s;
+    return std::nullopt;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -30,6 +36,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
+    PhaseProgress progress(opt.progress, "sweep", in.geometry.tubes.size());
     SweepOptions sweep = opt.sweep;
     if (sweep.sweep_size <= 0) sweep.sweep_size = in.geometry.sweep_size;
     sweep.store_boundary_faces = true;
@@ -39,9 +46,9 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
     r.counts = {{"tubes", double(s.tubes)},
                 {"nodes", double(s.nodes)},
                 {"hexes", double(s.hexes)},
-                {"outer quads", double(s.outer_quads)},
-                {"min J_m", s.min_scaled_jacobian},
-                {"max cond", s.max_condition}};
+                {"outer quads", double(s.outer_quads)}};
+    if (s.hexes > 0) r.statistics = {{"min J_m", s.min_scaled_jacobian}, {"max cond", s.max_condition}};
+    progress.finish();
     out.phases.push_back(std::move(r));
 }
 
@@ -72,6 +79,9 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
         walls.insert(t.wall_faces.begin(), t.wall_faces.end());
     }
 
+    index_t face_total = 0;
+    for (const PipelineFace& f : in.faces) face_total += !(f.tube_wall || walls.count(f.id));
+    PhaseProgress progress(opt.progress, "surface", face_total);
     std::vector<surface::SurfaceFace> faces;
     for (const PipelineFace& f : in.faces) {
         if (f.tube_wall || walls.count(f.id)) continue;
@@ -93,12 +103,14 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
                 {"edge nodes", double(edge_points)},
                 {"interior nodes", double(s.interior_nodes)},
                 {"triangles", double(s.triangles)}};
+    progress.finish();
     out.phases.push_back(std::move(r));
 }
 
 void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
     HybridMesh& mesh = out.mesh;
+    PhaseProgress progress(opt.progress, "pyramids", out.sweep.outer_quads.size() / 4);
     // Copies: build_pyramids appends to the mesh while it reads these.
     const std::vector<index_t> boundary = mesh.block(FaceKind::Tri).nodes;
     PyramidInput in;
@@ -127,7 +139,19 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
                 {"try-node apex", double(try_nodes)},
                 {"drawbacks", double(s.drawback_rounds)},
                 {"front triangles", double(out.tet_front.size() / 3)}};
+    progress.finish();
     out.phases.push_back(std::move(r));
+}
+
+void run_phases(const PipelineInput& input, const MeshOptions& options, Stage until, PipelineResult& out) {
+    run_sweep(input, options, out);
+    out.reached = Stage::Sweep;
+    if (until == Stage::Sweep) return;
+    run_surface(input, options, out);
+    out.reached = Stage::Surface;
+    if (until == Stage::Surface) return;
+    run_pyramids(options, out);
+    out.reached = Stage::Pyramids;
 }
 
 }  // namespace
@@ -139,14 +163,9 @@ PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& optio
         threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.threads));
 
     PipelineResult out;
-    run_sweep(input, options, out);
-    out.reached = Stage::Sweep;
-    if (until == Stage::Sweep) return out;
-    run_surface(input, options, out);
-    out.reached = Stage::Surface;
-    if (until == Stage::Surface) return out;
-    run_pyramids(options, out);
-    out.reached = Stage::Pyramids;
+    run_phases(input, options, until, out);
+    out.quality = summarize_quality(out.mesh);
+    for (const PhaseReport& p : out.phases) out.seconds += p.seconds;
     return out;
 }
 

@@ -30,14 +30,20 @@
 //
 // Every phase is deterministic for a given thread count (each module guarantees it), so the
 // pipeline is too.
+#include <iterator>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "engine/check/mesh_check.hpp"
 #include "engine/core/types.hpp"
 #include "engine/geometry/tube_data.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
+#include "engine/pipeline/progress.hpp"
 #include "engine/pyramids/build_pyramids.hpp"
+#include "engine/quality/quality.hpp"
 #include "engine/surface/face_mesher.hpp"
 #include "engine/surface/size_field.hpp"
 #include "engine/sweep/sweep.hpp"
@@ -46,9 +52,31 @@ namespace tubemesh {
 
 enum class Stage { Sweep, Surface, Pyramids };  // Tets comes later
 
-const char* stage_name(Stage s);  // "sweep", "surface", "pyramids"
+// Every stage in pipeline order, and the last one: run_pipeline's and the CLI's default.
+// (A new stage goes into the enum, stage_name and this list; nothing else keys on the count.)
+inline constexpr Stage kStages[] = {Stage::Sweep, Stage::Surface, Stage::Pyramids};
+inline constexpr Stage kLastStage = kStages[std::size(kStages) - 1];
 
+const char* stage_name(Stage s);  // "sweep", "surface", "pyramids"
+// The inverse of stage_name; nullopt for a name that is no stage.
+std::optional<Stage> stage_from_name(std::string_view name);
+
+// Every knob of a run, each with its default. The first three are the user's sizes: geom
+// plans with them (geom/prepare.hpp, geom/mesh_file.hpp) and hands the planned S and St to the
+// engine in DiscreteGeometry; run_pipeline itself reads the fields from `sweep` on.
 struct MeshOptions {
+    // S, the overall mesh size (edges and surface triangles far from the tubes). 0 (default):
+    // the bounding-box diagonal / 25, at least 1.3 St (geom/sizing.hpp). The paper's rules may
+    // lower it to 1.3 St when they cut St; such changes are listed in the report.
+    double size = 0;
+    // St, the hex ring's thickness and axial spacing. 0 (default): the smallest tube
+    // diameter, then cut by the paper's rules. A value given here is honoured or refused: if
+    // the rules would have to cut it, or it is not below S, preparing the model throws.
+    double sweep_size = 0;
+    // n, nodes around every tube. 0 (default): the multiple of 4 nearest to the ring's
+    // mid-circumference over St, at least 4 (geom::ring_node_count; 8 for St = diameter).
+    int circumferential = 0;
+
     // Hex ring options (engine/sweep/sweep.hpp documents each default: L = 2 layers graded
     // 1.5, axial aspect 1.5, condition cap 3.0). sweep.sweep_size = 0 (the default) takes
     // DiscreteGeometry::sweep_size, St from geom's size plan; store_boundary_faces must stay
@@ -66,6 +94,18 @@ struct MeshOptions {
     PyramidOptions pyramids;
     // oneTBB worker threads for the whole run; 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
+    // Determinism. The same input, options and thread count always give the same mesh, byte
+    // for byte: there is no faster timing-dependent mode. The sweep, surface and pyramid
+    // phases also give the same mesh for every thread count. false (default): a phase may
+    // split its work by thread count (the tet step's Delaunay parts); true: it uses a fixed
+    // split, so the mesh is the same on any machine, at some cost in speed.
+    bool same_for_any_thread_count = false;
+    // Run the validity and conformity check (engine/pipeline/stage_check.hpp) on the result
+    // before handing it out: geom::mesh_file / mesh_model throw when it fails. Default true.
+    bool check = true;
+    // Progress of each phase (progress.hpp); empty (default) = silent. The mesh does not
+    // depend on it.
+    ProgressCallback progress;
 };
 
 // One B-rep face of the model.
@@ -80,16 +120,25 @@ struct PipelineInput {
     std::vector<PipelineFace> faces;  // every face of the model, in id order
 };
 
+// One phase of a run: the engine's phases (run_pipeline) and, before them, geom's (import,
+// tubes, sizes, discretize) and, after them, the check. A new phase is one more entry.
 struct PhaseReport {
-    std::string name;  // "sweep", "surface", "pyramids"
+    std::string name;  // "import", ..., "sweep", "surface", "pyramids", "check"
     double seconds = 0;
-    std::vector<std::pair<std::string, double>> counts;  // ("hexes", 1432), ("min J_m", 0.92), ...
+    std::vector<std::pair<std::string, double>> counts;      // whole numbers: ("hexes", 1432), ...
+    std::vector<std::pair<std::string, double>> statistics;  // measures: ("min J_m", 0.92), ...
 };
 
 struct PipelineResult {
     HybridMesh mesh;
     std::vector<PhaseReport> phases;  // one per phase run, in order
     Stage reached = Stage::Sweep;
+    // The report's totals, filled at the end of run_pipeline (geom::mesh_file adds its own
+    // phases to `phases` and `seconds`).
+    QualitySummary quality;             // per cell kind: count, min, mean, max, histogram
+    double seconds = 0;                 // sum of the phases' seconds
+    std::vector<std::string> warnings;  // what the user should know about this mesh, one line each
+    CheckReport check;  // filled by check_result (stage_check.hpp); empty before
     SweepResult sweep;
     // After Pyramids: the closed boundary of the tet region, 3 node ids per triangle, normal
     // out of the region — the pyramids' free triangles, then the surface triangles no pyramid
@@ -98,9 +147,11 @@ struct PipelineResult {
     PyramidStats pyramid_stats;
 };
 
-// Runs the phases up to and including `until`. Throws tubemesh::Error from the first phase
-// that fails (its message names the tube or face).
+// Runs the phases up to and including `until`, then summarises the quality. Throws
+// tubemesh::Error from the first phase that fails (its message names the tube or face).
+// Reports progress per phase through options.progress: sweep counts tubes, surface faces,
+// pyramids front quads (start and end of each phase: the modules run as one call each).
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options = {},
-                            Stage until = Stage::Pyramids);
+                            Stage until = kLastStage);
 
 }  // namespace tubemesh

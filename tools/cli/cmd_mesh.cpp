@@ -1,145 +1,217 @@
-// `tubemesh mesh [IN] -o OUT [-o OUT2 ...] [--size S] [--sweep-size St] [--until STAGE]
-// [--threads T] [--quiet]`: mesh a CAD solid (or, without IN, the built-in dam block, preset
-// paper-ex1) through the pipeline up to STAGE, print one line per phase and the quality table,
-// and write the mesh to every OUT (format by extension: .msh, .vtu, .inp). Files are written
-// only after every phase succeeded; an error is one line on stderr and exit 2, with no file.
+// `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
+// [--threads T] [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
+// (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
+// progress, print the phases and Table 1, and write the mesh to every OUT (format by
+// extension: .msh, .vtu, .inp) and the report as JSON.
 //
-// Stages: sweep, surface, pyramids (the default for now; tets come later). Only a sweep-stage
-// mesh passes `tubemesh check`: from the surface stage on, the surface triangles are stored as
-// boundary faces before any cell has them (engine/pipeline/pipeline.hpp).
+// Safety: arguments, output formats and output folders are checked before any work; the mesh
+// passes the stage's check (engine/pipeline/stage_check.hpp) before any file is written; each
+// file is written to a temporary name and renamed, and if a later file fails the earlier ones
+// of this run are removed. Any error: one line on stderr, exit 2, no output file.
 #include <fmt/format.h>
-#include <tbb/global_control.h>
+#include <unistd.h>
 
 #include <cctype>
-#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "engine/io/atomic_file.hpp"
 #include "engine/io/mesh_io.hpp"
-#include "engine/pipeline/pipeline.hpp"
-#include "engine/quality/quality.hpp"
-#include "geom/builders/block_builder.hpp"
-#include "geom/builders/presets.hpp"
-#include "geom/import.hpp"
-#include "geom/prepare.hpp"
+#include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/cli/quality_table.hpp"
+#include "tools/cli/mesh_report.hpp"
+#include "tools/cli/progress_line.hpp"
 
 namespace tubemesh::cli {
 
 namespace {
+
+namespace fs = std::filesystem;
 
 struct MeshArgs {
     std::string input;
     std::vector<std::string> outputs;
     double size = 0;
     double sweep_size = 0;
-    std::string until_name = "pyramids";
-    Stage until = Stage::Pyramids;
+    int circumferential = 0;
+    int layers = 2;
     int threads = 0;
+    int solid = 0;
+    std::string report;
+    std::string until_name = stage_name(kLastStage);
     bool quiet = false;
+    CLI::Option* size_option = nullptr;
+    CLI::Option* sweep_option = nullptr;
 };
 
-std::string count_text(const std::pair<std::string, double>& c) {
-    if (c.second == static_cast<double>(static_cast<long long>(c.second)) && c.second >= 0 && c.second < 1e15)
-        return fmt::format("{} {}", static_cast<long long>(c.second), c.first);
-    return fmt::format("{} {:.4g}", c.first, c.second);
+std::string lower_extension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+void require_positive(const CLI::Option* option, double value, const char* name) {
+    if (option->count() > 0 && !(value > 0 && std::isfinite(value)))
+        throw Error(fmt::format("{} must be a positive number, got {}", name, value));
+}
+
+// A file can be created there: its folder exists and is writable, and it is not a folder.
+void require_writable(const std::string& path) {
+    const fs::path p(path);
+    const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        throw Error("cannot write '" + path + "': the folder '" + dir.string() + "' does not exist");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw Error("cannot write '" + path + "': the folder '" + dir.string() + "' is not writable");
+    if (fs::is_directory(p, ec)) throw Error("cannot write '" + path + "': it is a folder");
+}
+
+void check_outputs(const MeshArgs& a, Stage until) {
+    for (const std::string& out : a.outputs) {
+        const std::string ext = lower_extension(out);
+        if (ext != ".msh" && ext != ".vtu" && ext != ".inp")
+            throw Error("cannot write '" + out + "': unknown mesh format (use .msh, .vtu or .inp)");
+        if (ext == ".inp" && (until == Stage::Surface || until == Stage::Pyramids))
+            throw Error("cannot write '" + out + "': Abaqus .inp needs every boundary face on a cell, which a " +
+                        stage_name(until) + "-stage mesh does not have yet (use .msh or .vtu)");
+        require_writable(out);
+    }
+    if (!a.report.empty()) {
+        if (lower_extension(a.report) != ".json")
+            throw Error("cannot write the report '" + a.report + "': it must end in .json");
+        require_writable(a.report);
+    }
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    io::AtomicFile file(path);
+    file.write(text);
+    file.commit();
+}
+
+// All files or none: a failure removes what this run already wrote.
+void write_all(const HybridMesh& mesh, const std::vector<std::string>& outputs, const std::string& report,
+               const std::string& report_text) {
+    std::vector<std::string> written;
+    try {
+        for (const std::string& out : outputs) {
+            write_mesh(mesh, out);
+            written.push_back(out);
+        }
+        if (!report.empty()) write_text(report, report_text);
+    } catch (...) {
+        std::error_code ec;
+        for (const std::string& w : written) fs::remove(w, ec);
+        throw;
+    }
+}
+
+MeshOptions mesh_options(const MeshArgs& a, ProgressLine& progress) {
+    require_positive(a.size_option, a.size, "--size");
+    require_positive(a.sweep_option, a.sweep_size, "--sweep-size");
+    if (a.size_option->count() && a.sweep_option->count() && !(a.sweep_size < a.size))
+        throw Error(fmt::format("contradictory sizes: --sweep-size {} must be smaller than --size {}", a.sweep_size,
+                                a.size));
+    MeshOptions o;
+    o.size = a.size;
+    o.sweep_size = a.sweep_size;
+    o.circumferential = a.circumferential;
+    o.sweep.radial_layers = a.layers;
+    o.threads = a.threads;
+    o.progress = progress.callback();
+    return o;
 }
 
 }  // namespace
 
 Command add_mesh_command(CLI::App& app) {
     auto args = std::make_shared<MeshArgs>();
-    CLI::App* cmd = app.add_subcommand("mesh", "Mesh a CAD solid with tubular holes (hex rings, pyramids; tets later)");
-    cmd->add_option("IN", args->input, "CAD file (STEP, IGES or BREP); without it, the built-in dam block (paper-ex1)");
-    cmd->add_option("-o,--output", args->outputs, "Mesh file to write (.msh, .vtu, .inp); repeat for several")
-        ->required()
+    CLI::App* cmd = app.add_subcommand("mesh", "Mesh a CAD solid with tubular holes (hex rings, pyramids, tets)");
+    cmd->add_option("IN", args->input,
+                    "CAD file (.step .stp .iges .igs .brep); without it, the built-in dam block (paper-ex1)");
+    cmd->add_option("-o,--output", args->outputs,
+                    "Mesh file to write (.msh, .vtu, .inp); repeat for several. Default without IN: "
+                    "dam_block.msh and dam_block.vtu")
         ->allow_extra_args(false);  // `-o a.msh IN` must not take IN as a second output
-    cmd->add_option("--size", args->size, "Overall mesh size S (default: bounding-box diagonal / 25)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--sweep-size", args->sweep_size, "Hex ring thickness St (default: smallest tube diameter)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--until", args->until_name, "Last stage to run: sweep, surface or pyramids (default; tets come later)")
-        ->transform(CLI::IsMember({"sweep", "surface", "pyramids"}, CLI::ignore_case))
+    args->size_option = cmd->add_option("--size", args->size,
+                                        "Overall mesh size S (default: bounding-box diagonal / 25, at least 1.3 St)");
+    args->sweep_option = cmd->add_option(
+        "--sweep-size", args->sweep_size,
+        "Hex ring thickness St (default: smallest tube diameter, cut by the paper's rules; a given St the rules "
+        "would cut is an error)");
+    cmd->add_option("--circ", args->circumferential,
+                    "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 4)")
+        ->check(CLI::Range(3, 4096));
+    cmd->add_option("--layers", args->layers, "Hex layers across the ring, L (default 2, graded 1.5 towards the wall)")
+        ->check(CLI::Range(1, 64));
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
+    cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
+    cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
+        ->check(CLI::Range(1, 1 << 30));
+    std::string stages;
+    for (Stage s : kStages) stages += (stages.empty() ? "" : ", ") + std::string(stage_name(s));
+    cmd->add_option("--until", args->until_name, "Last stage to run: " + stages + " (default: the last)")
         ->option_text("STAGE");
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::PositiveNumber);
     cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
     cmd->footer(
-        "Only a --until sweep mesh passes `tubemesh check`: later partial meshes store the surface triangles as "
-        "boundary faces before the tets make them cell faces (.inp cannot hold them).\n"
-        "Exit status: 0 meshed and written, 2 on any error (no file is written then).");
+        "Progress: one updating line per phase on a terminal, plain 'progress:' lines otherwise.\n"
+        "Partial stages (--until) are checked for what they hold (engine/pipeline/stage_check.hpp); .inp needs "
+        "the sweep stage or the full mesh.\n"
+        "Exit status: 0 meshed and written, 2 on any error (one line on stderr, no file written).");
 
-    return {cmd, [args]() -> int {
+    return {cmd, [args, stages]() -> int {
+        const std::optional<Stage> until = stage_from_name(args->until_name);
+        if (!until) throw Error("--until " + args->until_name + ": no such stage (use " + stages + ")");
+        if (args->outputs.empty()) {
+            if (!args->input.empty()) throw Error("mesh needs -o OUT.msh|.vtu|.inp for '" + args->input + "'");
+            args->outputs = {"dam_block.msh", "dam_block.vtu"};
+        }
+        check_outputs(*args, *until);
+        ProgressLine progress(ProgressLine::mode_for(args->quiet));
+        const MeshOptions options = mesh_options(*args, progress);
         auto say = [&](const std::string& s) {
             if (!args->quiet) fmt::print("{}\n", s);
         };
-        args->until = args->until_name == "sweep" ? Stage::Sweep
-                      : args->until_name == "surface" ? Stage::Surface
-                                                      : Stage::Pyramids;
-        // Output formats are checked before any work, so a bad name fails fast and writes nothing.
-        for (const std::string& out : args->outputs) {
-            std::string ext = std::filesystem::path(out).extension().string();
-            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            if (ext != ".msh" && ext != ".vtu" && ext != ".inp")
-                throw Error("cannot write '" + out + "': unknown mesh format (use .msh, .vtu or .inp)");
-            if (ext == ".inp" && args->until != Stage::Sweep)
-                throw Error("cannot write '" + out + "': Abaqus .inp needs every boundary face on a cell, which a " +
-                            stage_name(args->until) + "-stage mesh does not have yet (use .msh or .vtu)");
+
+        geom::MeshRun run;
+        try {
+            if (args->input.empty()) {
+                say("no input: meshing the built-in dam block (preset paper-ex1)");
+                run = geom::mesh_preset("paper-ex1", options, *until);
+            } else {
+                run = geom::mesh_file(args->input, options, {.solid = args->solid, .until = *until});
+            }
+        } catch (...) {
+            progress.close();
+            throw;
         }
-        // The whole command (surface maps, quality summary) on T threads, not only the pipeline.
-        std::optional<tbb::global_control> threads;
-        if (args->threads > 0)
-            threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(args->threads));
-        const auto t0 = std::chrono::steady_clock::now();
-        // The model: a file, or the built-in dam block.
-        std::optional<geom::BuiltBlock> built;
-        std::optional<geom::Model> imported;
-        const geom::Model* model = nullptr;
-        if (args->input.empty()) {
-            built.emplace(geom::build_block(geom::preset_spec("paper-ex1")));
-            model = &built->model;
-            say("no input: meshing the built-in dam block (preset paper-ex1)");
-        } else {
-            imported.emplace(geom::import_model(args->input));  // Error -> exit 2 in main
-            model = &*imported;
-        }
-        say(fmt::format("{} ({}): {} faces, {} edges", model->report().source, model->report().format,
-                        model->face_count(), model->edge_count()));
+        progress.close();
 
-        geom::PrepareOptions prep;
-        prep.sizing.size = args->size;
-        prep.sizing.sweep_size = args->sweep_size;
-        const geom::PreparedModel prepared = geom::prepare_model(*model, prep);
-        const double geometry_seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();  // import/build + prepare
-        for (const std::string& line : prepared.report_lines()) say(line);
-        if (args->until == Stage::Pyramids) say("note: tets come later; the last stage available is pyramids");
+        const PipelineResult& r = run.result;
+        const std::string report_text = args->report.empty() ? "" : run_json(run, args->outputs).dump(2) + "\n";
+        write_all(r.mesh, args->outputs, args->report, report_text);
+        if (args->quiet) return 0;
 
-        MeshOptions options;
-        options.threads = args->threads;
-        const PipelineResult result = run_pipeline(prepared.pipeline_input(), options, args->until);
-
+        say(fmt::format("{} ({}): {} tube{}, S = {:.6g}, St = {:.6g}", run.source, run.format, run.tubes,
+                        run.tubes == 1 ? "" : "s", run.size, run.sweep_size));
+        for (const std::string& line : run.model_lines) say("  " + line);
+        for (const std::string& w : r.warnings) fmt::print(stderr, "tubemesh: warning: {}\n", w);
+        if (r.reached != kLastStage)
+            say(fmt::format("note: stopped after the {} stage (--until)", stage_name(r.reached)));
         say("");
-        say(fmt::format("{:<10} {:8.3f} s  {} tubes, S {:.4g}, St {:.4g}", "geometry", geometry_seconds,
-                        prepared.geometry.tubes.size(), prepared.geometry.size, prepared.geometry.sweep_size));
-        for (const PhaseReport& p : result.phases) {
-            std::string counts;
-            for (const auto& c : p.counts) counts += (counts.empty() ? "" : ", ") + count_text(c);
-            say(fmt::format("{:<10} {:8.3f} s  {}", p.name, p.seconds, counts));
-        }
-        const HybridMesh& mesh = result.mesh;
+        for (const std::string& line : phase_lines(run)) say(line);
+        const HybridMesh& mesh = r.mesh;
         say(fmt::format("\n{} nodes, {} hexahedra, {} pyramids, {} tetrahedra; {} boundary triangles, {} boundary quads",
                         mesh.point_count(), mesh.cell_count(CellKind::Hex), mesh.cell_count(CellKind::Pyramid),
                         mesh.cell_count(CellKind::Tet), mesh.face_count(FaceKind::Tri),
                         mesh.face_count(FaceKind::Quad)));
-        if (!args->quiet) fmt::print("\n{}", format_quality_table(summarize_quality(mesh), mesh.point_count()));
-        for (const std::string& out : args->outputs) {
-            write_mesh(mesh, out);  // atomic: a failure leaves no file
-            say("wrote " + out);
-        }
+        fmt::print("\n{}\n", run_table(run));
+        for (const std::string& out : args->outputs) say("wrote " + out);
+        if (!args->report.empty()) say("wrote " + args->report);
         return 0;
     }};
 }

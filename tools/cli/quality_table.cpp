@@ -7,8 +7,9 @@ namespace tubemesh::cli {
 namespace {
 
 void add_measure_rows(std::string& out, const char* kind, const char* measure, const MeasureSummary& m,
-                      bool with_count) {
+                      bool with_count, double seconds = -1) {
     if (with_count) out += fmt::format("{:<18} {:<14} {:>12}\n", kind, "Num. element", m.count);
+    if (with_count && seconds >= 0) out += fmt::format("{:<18} {:<14} {:>10.3f} s\n", "", "CPU Time", seconds);
     if (m.count == 0) return;
     out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Min. {}", measure), m.min);
     out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Avg. {}", measure), m.mean);
@@ -26,21 +27,39 @@ nlohmann::json measure_json(const MeasureSummary& m) {
             {"max", m.max},     {"classes_lo", m.lo}, {"classes_hi", m.hi}, {"histogram", m.histogram}};
 }
 
-}  // namespace
-
-std::string format_quality_table(const QualitySummary& q, index_t nodes) {
+std::string quality_rows(const QualitySummary& q, index_t nodes, const KindTimes& times) {
     std::string out;
-    add_measure_rows(out, "Tetrahedral mesh", "metric", q.tet_collapse, true);
-    add_measure_rows(out, "Pyramidal mesh", "metric", q.pyramid_jacobian, true);
-    add_measure_rows(out, "Hexahedral mesh", "J_m", q.hex_scaled_jacobian, true);
+    add_measure_rows(out, "Tetrahedral mesh", "metric", q.tet_collapse, true, times.tet);
+    add_measure_rows(out, "Pyramidal mesh", "metric", q.pyramid_jacobian, true, times.pyramid);
+    add_measure_rows(out, "Hexahedral mesh", "J_m", q.hex_scaled_jacobian, true, times.hex);
     add_measure_rows(out, "", "Cond", q.hex_condition, false);
     out += fmt::format("{:<18} {:<14} {:>12}\n", "Nodes", "", nodes);
+    return out;
+}
+
+std::string histograms(const QualitySummary& q) {
+    std::string out;
     out += "\nShape metric classes (10 equal classes; Cond over [1, 4]):\n";
     if (q.tet_collapse.count) out += histogram_line("tet collapse", q.tet_collapse);
     if (q.pyramid_jacobian.count) out += histogram_line("pyramid scaled Jac.", q.pyramid_jacobian);
     if (q.hex_scaled_jacobian.count) out += histogram_line("hex J_m", q.hex_scaled_jacobian);
     if (q.hex_condition.count) out += histogram_line("hex Cond", q.hex_condition);
     return out;
+}
+
+}  // namespace
+
+std::string format_quality_table(const QualitySummary& q, index_t nodes) {
+    return quality_rows(q, nodes, {}) + histograms(q);
+}
+
+std::string format_run_table(const QualitySummary& q, index_t nodes, const KindTimes& times, double total_seconds) {
+    const index_t cells = q.tet_collapse.count + q.pyramid_jacobian.count + q.hex_scaled_jacobian.count;
+    std::string out = quality_rows(q, nodes, times);
+    out += fmt::format("{:<18} {:<14} {:>10.3f} s\n", "Total time", "", total_seconds);
+    out += fmt::format("{:<18} {:<14} {:>12.0f}\n", "Elements / second", "",
+                       total_seconds > 0 ? cells / total_seconds : 0.0);
+    return out + histograms(q);
 }
 
 nlohmann::json quality_json(const QualitySummary& q) {

@@ -9,6 +9,16 @@
 namespace tubemesh::cli {
 
 std::string format_quality_table(const QualitySummary& q, index_t nodes);
+
+// The time of the phase that made each kind (tets: "tets", pyramids: "pyramids", hexes:
+// "sweep"); negative when that phase did not run.
+struct KindTimes {
+    double tet = -1, pyramid = -1, hex = -1;
+};
+
+// Table 1 of a meshing run: as above with a "CPU Time" row per kind, then the total time
+// and elements per second (all cells over the total).
+std::string format_run_table(const QualitySummary& q, index_t nodes, const KindTimes& times, double total_seconds);
 nlohmann::json quality_json(const QualitySummary& q);
 
 }  // namespace tubemesh::cli

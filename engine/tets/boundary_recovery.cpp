@@ -1,0 +1,332 @@
+#include "engine/tets/boundary_recovery.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "engine/delaunay/delaunay.hpp"
+#include "engine/predicates/predicates.hpp"
+#include "engine/tets/front_check.hpp"
+#include "engine/tets/recovery_crossings.hpp"
+#include "engine/tets/recovery_flips.hpp"
+#include "engine/tets/recovery_mesh.hpp"
+
+namespace tubemesh::tets {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string name(const Target& g) {
+    std::string s = g.is_edge() ? "front edge " : "front triangle ";
+    s += std::to_string(g.a) + "-" + std::to_string(g.b);
+    if (!g.is_edge()) s += "-" + std::to_string(g.c);
+    return s;
+}
+
+class Recovery {
+public:
+    Recovery(RecoveryMesh& m, FrontLocks& locks, const RecoveryOptions& o, index_t input_points)
+        : m_(m), locks_(locks), opt_(o), input_points_(input_points) {}
+
+    // Makes the target present; returns whether flips alone sufficed.
+    bool recover(const Target& g) {
+        int steiner = 0;
+        for (int step = 0; step < opt_.max_steps_per_element; ++step) {
+            if (present(g)) return steiner == 0;
+            find_crossings(m_, g, cx_);
+            if (cx_.vertex_on_target != kNoIndex) {
+                const index_t w = cx_.vertex_on_target;
+                throw Error("tet front intersects itself: " +
+                            (w < input_points_ ? "front point " + std::to_string(w) : std::string("a Steiner point")) +
+                            " lies inside " + name(g));
+            }
+            for (const auto& [p, q] : cx_.edges)
+                if (locks_.edge(p, q))
+                    throw Error("tet front intersects itself: front edge " + std::to_string(p) + "-" +
+                                std::to_string(q) + " crosses " + name(g));
+            if (flip_once(g)) continue;
+            if (++steiner > opt_.max_steiner_per_element || !insert_steiner(g))
+                throw Error("boundary recovery failed: " + name(g) +
+                            " could not be recovered by flips and Steiner points (is the front self-intersecting?)");
+        }
+        throw Error("boundary recovery failed: " + name(g) + " still missing after " +
+                    std::to_string(opt_.max_steps_per_element) + " steps");
+    }
+
+    bool present(const Target& g) {
+        if (g.is_edge()) return m_.find_edge(g.a, g.b) != kNoIndex;
+        return m_.find_face(g.a, g.b, g.c, 1) != kNoIndex || m_.find_face(g.a, g.b, g.c, -1) != kNoIndex;
+    }
+
+    FlipCounters counters;
+    std::vector<index_t> steiner;
+
+private:
+    bool flip_once(const Target& g) {
+        for (const auto& [p, q] : cx_.edges)
+            if (remove_edge(m_, p, q, &g, locks_, opt_.max_ring, counters)) return true;
+        for (const auto& [t, f] : cx_.faces)
+            if (m_.alive(t) && flip23(m_, t, f, &g, locks_, counters)) return true;
+        // A crossed face whose 2-3 flip is blocked: the union of its two tets is not convex at
+        // one of the face's edges; removing that edge unblocks it.
+        for (const auto& [p, q] : face_edges())
+            if (remove_edge(m_, p, q, &g, locks_, opt_.max_ring, counters)) return true;
+        return false;
+    }
+
+    std::vector<std::pair<index_t, index_t>> face_edges() const {
+        std::vector<std::pair<index_t, index_t>> out;
+        for (const auto& [t, f] : cx_.faces) {
+            if (!m_.alive(t)) continue;
+            const auto fv = m_.face(t, f);
+            for (int k = 0; k < 3; ++k) {
+                const index_t a = fv[k], b = fv[(k + 1) % 3];
+                if (!locks_.edge(a, b)) out.emplace_back(std::min(a, b), std::max(a, b));
+            }
+        }
+        return out;
+    }
+
+    bool insert_steiner(const Target& g) {
+        std::vector<index_t> ring_tets, ring;
+        std::vector<std::pair<index_t, index_t>> edges = cx_.edges;
+        const auto more = face_edges();
+        edges.insert(edges.end(), more.begin(), more.end());
+        for (const auto& [p, q] : edges) {
+            if (locks_.edge(p, q) || !m_.edge_ring(p, q, ring_tets, ring)) continue;
+            // First the centroid of the ring's points (off the edge: on a flat front the edge's
+            // plane is what blocks the flips), then points on the edge.
+            std::vector<std::array<double, 3>> cands;
+            std::array<double, 3> c = {0, 0, 0};
+            for (index_t r : ring)
+                for (int k = 0; k < 3; ++k) c[k] += m_.point(r)[k];
+            for (int k = 0; k < 3; ++k)
+                c[k] = (c[k] + m_.point(p)[k] + m_.point(q)[k]) / static_cast<double>(ring.size() + 2);
+            cands.push_back(c);
+            for (index_t r : ring) {
+                std::array<double, 3> e;
+                for (int k = 0; k < 3; ++k) e[k] = 0.5 * (c[k] + m_.point(r)[k]);
+                cands.push_back(e);
+            }
+            // Near the edge's midpoint, moved towards each ring point: inside the ring's kernel.
+            for (double t : {0.1, 0.25})
+                for (index_t r : ring) {
+                    std::array<double, 3> e;
+                    for (int k = 0; k < 3; ++k) {
+                        const double mid = 0.5 * (m_.point(p)[k] + m_.point(q)[k]);
+                        e[k] = mid + t * (m_.point(r)[k] - mid);
+                    }
+                    cands.push_back(e);
+                }
+            for (double w : {0.5, 0.4, 0.6}) {
+                std::array<double, 3> e;
+                for (int k = 0; k < 3; ++k) e[k] = m_.point(p)[k] + w * (m_.point(q)[k] - m_.point(p)[k]);
+                cands.push_back(e);
+            }
+            for (const auto& cand : cands) {
+                const double* s = cand.data();
+                if (point_on_target(m_, g, s)) continue;
+                // In the plane of a segment target and the edge it crosses, a Steiner point only
+                // recreates the same blocked crossing.
+                if (g.is_edge() && predicates::orient3d(m_.point(g.a), m_.point(g.b), m_.point(p), s) == 0) continue;
+                if (!g.is_edge() && predicates::orient3d(m_.point(g.a), m_.point(g.b), m_.point(g.c), s) == 0) continue;
+                const index_t v = insert_point(m_, ring_tets, s, locks_);
+                if (v != kNoIndex) {
+                    steiner.push_back(v);
+                    return true;
+                }
+            }
+        }
+        for (const auto& [t, f] : cx_.faces) {
+            if (!m_.alive(t)) continue;
+            const index_t nb = m_.neighbour(4 * t + static_cast<index_t>(f));
+            if (nb == kNoIndex) continue;
+            const index_t cav[2] = {t, nb >> 2};
+            const Tet a = m_.tet(t);
+            const index_t apex = m_.vertex(nb >> 2)[nb & 3];
+            // Candidates: the 5 points' centroid, then points between the face and each apex.
+            const auto fv = m_.face(t, f);
+            double c5[3] = {0, 0, 0}, cf[3] = {0, 0, 0};
+            for (int k = 0; k < 3; ++k) {
+                for (index_t v : a) c5[k] += m_.point(v)[k] / 5;
+                c5[k] += m_.point(apex)[k] / 5;
+                for (index_t v : fv) cf[k] += m_.point(v)[k] / 3;
+            }
+            std::vector<std::array<double, 3>> cands = {{c5[0], c5[1], c5[2]}};
+            for (index_t ap : {a[f], apex})
+                for (double w : {0.25, 0.5})
+                    cands.push_back({cf[0] + w * (m_.point(ap)[0] - cf[0]), cf[1] + w * (m_.point(ap)[1] - cf[1]),
+                                     cf[2] + w * (m_.point(ap)[2] - cf[2])});
+            for (const auto& s : cands) {
+                if (point_on_target(m_, g, s.data())) continue;
+                const index_t v = insert_point(m_, cav, s.data(), locks_);
+                if (v != kNoIndex) {
+                    steiner.push_back(v);
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    RecoveryMesh& m_;
+    FrontLocks& locks_;
+    const RecoveryOptions& opt_;
+    index_t input_points_;
+    Crossings cx_;
+};
+
+}  // namespace
+
+TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front,
+                           const RecoveryOptions& options, RecoveryStats* stats_out) {
+    const auto t_start = Clock::now();
+    RecoveryStats st;
+    if (xyz.size() % 3 != 0) throw Error("tet front: the coordinate array's length is not a multiple of 3");
+    const index_t n = static_cast<index_t>(xyz.size() / 3);
+    const auto edges = check_front(front, n);
+    st.front_triangles = static_cast<index_t>(front.size() / 3);
+    st.front_edges = static_cast<index_t>(edges.size());
+
+    // 1. Delaunay of the used points in a box.
+    auto t0 = Clock::now();
+    std::vector<std::uint8_t> used(n, 0);
+    for (index_t v : front) used[v] = 1;
+    std::vector<index_t> ids;
+    std::vector<double> x, y, z;
+    for (index_t i = 0; i < n; ++i) {
+        if (!used[i]) continue;
+        ids.push_back(i);
+        x.push_back(xyz[3 * i]);
+        y.push_back(xyz[3 * i + 1]);
+        z.push_back(xyz[3 * i + 2]);
+    }
+    st.front_points = static_cast<index_t>(ids.size());
+    st.unused_points = n - st.front_points;
+    delaunay::DelaunayOptions dopt;
+    dopt.threads = options.threads;
+    dopt.partitions = options.partitions;
+    dopt.bounding_box = true;
+    dopt.box_margin = options.box_margin;
+    delaunay::DelaunayResult del = delaunay::delaunay(x, y, z, dopt);
+    if (!del.duplicates.empty())
+        throw Error("tet front: points " + std::to_string(ids[del.duplicates[0].first]) + " and " +
+                    std::to_string(ids[del.duplicates[0].second]) + " have the same coordinates");
+    const index_t m_used = static_cast<index_t>(ids.size());
+    std::vector<double> all(xyz.begin(), xyz.end());
+    for (const auto& c : del.box_corners) all.insert(all.end(), c.begin(), c.end());
+    {
+        index_t* v = del.tets.vertex(0);
+        for (std::size_t i = 0; i < std::size_t{4} * del.tets.size(); ++i)
+            v[i] = v[i] < m_used ? ids[v[i]] : n + (v[i] - m_used);
+    }
+    RecoveryMesh mesh(std::move(all), del.tets);
+    st.delaunay_tets = del.tets.size();
+    st.seconds_delaunay = since(t0);
+
+    // 2. Edges, then faces.
+    FrontLocks locks(front);
+    Recovery rec(mesh, locks, options, n);
+    t0 = Clock::now();
+    for (const auto& [u, v] : edges) {
+        const Target g{u, v, kNoIndex};
+        if (rec.present(g)) continue;
+        ++st.missing_edges;
+        st.edges_by_flips += rec.recover(g);
+    }
+    st.seconds_edges = since(t0);
+    t0 = Clock::now();
+    locks.lock_faces = true;
+    for (std::size_t i = 0; i < front.size(); i += 3) {
+        const Target g{front[i], front[i + 1], front[i + 2]};
+        if (rec.present(g)) continue;
+        ++st.missing_faces;
+        st.faces_by_flips += rec.recover(g);
+    }
+    st.seconds_faces = since(t0);
+    st.steiner_inserted = static_cast<index_t>(rec.steiner.size());
+    t0 = Clock::now();
+    if (options.remove_steiner)
+        for (index_t s : rec.steiner)
+            if (mesh.incident_tet(s) != kNoIndex && contract_point(mesh, s)) ++st.steiner_removed;
+    st.seconds_steiner_removal = since(t0);
+
+    // 3. Inside / outside by flood fill, seeded on both sides of every front triangle.
+    t0 = Clock::now();
+    const index_t slots = mesh.slot_count();
+    constexpr std::uint8_t kInside = 1, kOutside = 2;
+    std::vector<std::uint8_t> label(slots, 0), is_front(std::size_t{4} * slots, 0);
+    std::vector<index_t> queue;
+    auto set_label = [&](index_t t, std::uint8_t l) {
+        if (label[t] == l) return;
+        if (label[t] != 0)
+            throw Error("tet front does not bound a region consistently: a tetrahedron lies both inside and "
+                        "outside (front triangles touching or oriented inconsistently)");
+        label[t] = l;
+        queue.push_back(t);
+    };
+    for (std::size_t i = 0; i < front.size(); i += 3) {
+        int lin = -1, lout = -1;
+        const index_t tin = mesh.find_face(front[i], front[i + 1], front[i + 2], -1, &lin);
+        const index_t tout = mesh.find_face(front[i], front[i + 1], front[i + 2], 1, &lout);
+        if (tin == kNoIndex || tout == kNoIndex)
+            throw Error("boundary recovery: internal error, front triangle " + std::to_string(i / 3) + " lost");
+        is_front[4 * std::size_t{tin} + lin] = 1;
+        is_front[4 * std::size_t{tout} + lout] = 1;
+        set_label(tin, kInside);
+        set_label(tout, kOutside);
+    }
+    for (std::size_t k = 0; k < queue.size(); ++k) {
+        const index_t t = queue[k];
+        for (int f = 0; f < 4; ++f) {
+            if (is_front[4 * std::size_t{t} + f]) continue;
+            const index_t nb = mesh.neighbour(4 * t + static_cast<index_t>(f));
+            if (nb != kNoIndex) set_label(nb >> 2, label[t]);
+        }
+    }
+    std::vector<std::uint8_t> keep(slots, 0);
+    for (index_t t = 0; t < slots; ++t) {
+        if (!mesh.alive(t) || label[t] != kInside) continue;
+        keep[t] = 1;
+        for (int i = 0; i < 4; ++i)
+            if (mesh.vertex(t)[i] >= n && mesh.vertex(t)[i] < n + 8)
+                throw Error("tet front is oriented inwards: its triangles' normals must point out of the region");
+    }
+    TetDomain out;
+    out.front_points = n;
+    out.front.assign(front.begin(), front.end());
+    out.tets = mesh.compact(keep);
+    // Points: the input ones, then the Steiner points still in a tet, in creation order.
+    std::vector<index_t> new_id(mesh.point_count(), kNoIndex);
+    for (index_t i = 0; i < n; ++i) new_id[i] = i;
+    out.xyz.assign(xyz.begin(), xyz.end());
+    std::vector<std::uint8_t> in_tet(mesh.point_count(), 0);
+    for (index_t v : out.tets.vertices()) in_tet[v] = 1;
+    for (index_t s : rec.steiner)
+        if (in_tet[s]) {
+            new_id[s] = out.point_count();
+            out.xyz.insert(out.xyz.end(), mesh.point(s), mesh.point(s) + 3);
+            ++st.steiner_kept;
+        }
+    for (index_t t = 0; t < out.tets.size(); ++t)
+        for (int i = 0; i < 4; ++i) out.tets.vertex(t)[i] = new_id[out.tets.vertex(t)[i]];
+    std::size_t open = 0;
+    for (index_t nb : out.tets.neighbours()) open += nb == kNoIndex;
+    if (open != front.size() / 3)
+        throw Error("boundary recovery: internal error, the region's boundary has " + std::to_string(open) +
+                    " faces, the front " + std::to_string(front.size() / 3));
+    st.seconds_classify = since(t0);
+    st.tets = out.tets.size();
+    st.flips23 = rec.counters.flips23;
+    st.edge_removals = rec.counters.edge_removals;
+    st.flips32 = rec.counters.flips32;
+    st.flips44 = rec.counters.flips44;
+    st.seconds_total = since(t_start);
+    if (stats_out) *stats_out = st;
+    return out;
+}
+
+}  // namespace tubemesh::tets

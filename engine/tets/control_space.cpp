@@ -1,0 +1,64 @@
+#include "engine/tets/control_space.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/tets/tet_domain.hpp"
+
+namespace tubemesh::tets {
+
+ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& options) {
+    if (domain.front.empty() || domain.front_points == 0)
+        throw Error("control space: the tet domain has no front triangles to take sizes from");
+    if (!(options.gradation >= 1.0)) throw Error("control space: the gradation factor must be at least 1");
+    if (!(options.far_size >= 0.0)) throw Error("control space: the far size must not be negative");
+    const index_t n = domain.front_points;
+    x_.resize(n);
+    y_.resize(n);
+    z_.resize(n);
+    for (index_t i = 0; i < n; ++i) {
+        x_[i] = domain.point(i)[0];
+        y_[i] = domain.point(i)[1];
+        z_[i] = domain.point(i)[2];
+    }
+    // Every front edge is met twice (once per adjacent triangle): the means are unaffected.
+    std::vector<double> sum(n, 0.0);
+    std::vector<index_t> count(n, 0);
+    for (std::size_t t = 0; t + 2 < domain.front.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const index_t a = domain.front[t + k], b = domain.front[t + (k + 1) % 3];
+            const double* pa = domain.point(a);
+            const double* pb = domain.point(b);
+            const double len = std::hypot(pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]);
+            sum[a] += len;
+            sum[b] += len;
+            count[a] += 1;
+            count[b] += 1;
+        }
+    node_size_.assign(n, 0.0);
+    double largest = 0;
+    for (index_t i = 0; i < n; ++i)
+        if (count[i]) {
+            node_size_[i] = sum[i] / count[i];
+            largest = std::max(largest, node_size_[i]);
+        }
+    // Nodes on no front triangle (not expected) take the largest size: they never shrink h.
+    for (index_t i = 0; i < n; ++i)
+        if (!count[i]) node_size_[i] = largest;
+    far_size_ = options.far_size > 0 ? options.far_size : largest;
+    slope_ = options.gradation - 1.0;
+    neighbours_ = std::max<index_t>(options.neighbours, 1);
+    index_ = std::make_unique<PointIndex>(x_, y_, z_);
+}
+
+ControlSpace::~ControlSpace() = default;
+
+double ControlSpace::size(const double* p) const {
+    thread_local std::vector<Neighbor> near;
+    index_->nearest({p[0], p[1], p[2]}, neighbours_, near);
+    double h = far_size_;
+    for (const Neighbor& q : near) h = std::min(h, node_size_[q.index] + slope_ * std::sqrt(q.distance_squared));
+    return h;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,48 @@
+#pragma once
+// The tet step's target size h(x) (paper §5): the front's local sizes (mean length of the front
+// edges at each front node), graded away from the front towards the far size S. With gradation
+// g, h may grow by at most the factor g per element: h(x) = min(S, min_i s_i + (g - 1) |x - x_i|),
+// the minimum taken over the k front nodes nearest x (a nanoflann query, engine/mesh/point_index).
+#include <memory>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/mesh/point_index.hpp"
+
+namespace tubemesh::tets {
+
+struct TetDomain;
+
+struct ControlSpaceOptions {
+    // Far size S; 0 = the largest local size of the front.
+    double far_size = 0;
+    // Largest growth of h from one element to the next; 1.4 (1 = uniform front size).
+    double gradation = 1.4;
+    // Front nodes consulted per query (the nearest ones); 8.
+    index_t neighbours = 8;
+};
+
+class ControlSpace {
+public:
+    // Throws tubemesh::Error when the domain has no front or the options are out of range.
+    explicit ControlSpace(const TetDomain& domain, const ControlSpaceOptions& options = {});
+    ~ControlSpace();
+    ControlSpace(const ControlSpace&) = delete;
+    ControlSpace& operator=(const ControlSpace&) = delete;
+
+    // Target edge length at p; thread-safe.
+    double size(const double* p) const;
+    // Local size of front node i (mean incident front edge length).
+    double node_size(index_t i) const { return node_size_[i]; }
+    double far_size() const { return far_size_; }
+
+private:
+    std::vector<double> x_, y_, z_;  // front nodes, read in place by the index
+    std::vector<double> node_size_;
+    double far_size_ = 0;
+    double slope_ = 0;
+    index_t neighbours_ = 8;
+    std::unique_ptr<PointIndex> index_;
+};
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,161 @@
+#include "engine/tets/interior_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "engine/mesh/point_index.hpp"
+#include "engine/mesh/topology.hpp"
+#include "engine/mesh/vec3_ops.hpp"
+#include "engine/predicates/predicates_inline.hpp"
+#include "engine/tets/control_space.hpp"
+
+namespace tubemesh::tets {
+namespace pred = tubemesh::predicates;
+using delaunay::kFreeSlot;
+using delaunay::kNoAdjacent;
+
+namespace {
+
+Vec3 at(const MeshView& m, index_t v) { return {m.xyz[3 * std::size_t{v}], m.xyz[3 * std::size_t{v} + 1], m.xyz[3 * std::size_t{v} + 2]}; }
+const double* ptr(const MeshView& m, index_t v) { return m.xyz.data() + 3 * std::size_t{v}; }
+
+// Visibility walk from `tet` to p. kNoIndex when it leaves through the front (p outside, or
+// behind a concave part of the front: either way no place for an ideal point of this tet)
+// or circles (possible off Delaunay meshes). The face order comes from a hash, not a shared
+// generator, so the walk is the same whatever thread runs it.
+index_t walk_to(const MeshView& m, index_t tet, const double* p, std::uint32_t seed) {
+    unsigned from = 4;
+    for (int steps = 0; steps < 4096; ++steps) {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        const index_t* v = m.tets.vertex(tet);
+        unsigned exit = 4;
+        for (unsigned k = 0; k < 4; ++k) {
+            const unsigned f = (seed + k) & 3;
+            if (f == from) continue;
+            const double* q[4] = {ptr(m, v[0]), ptr(m, v[1]), ptr(m, v[2]), ptr(m, v[3])};
+            q[f] = p;
+            if (pred::orient3d_inline(q[0], q[1], q[2], q[3]) < 0) {
+                exit = f;
+                break;
+            }
+        }
+        if (exit == 4) return tet;
+        const index_t code = m.tets.neighbour(4 * tet + exit);
+        if (code == kNoAdjacent) return kNoIndex;
+        tet = code >> 2;
+        from = code & 3;
+    }
+    return kNoIndex;
+}
+
+}  // namespace
+
+bool tet_too_big(const MeshView& m, index_t tet, const ControlSpace& space, double tolerance) {
+    const index_t* v = m.tets.vertex(tet);
+    const Vec3 p[4] = {at(m, v[0]), at(m, v[1]), at(m, v[2]), at(m, v[3])};
+    double sum = 0;
+    for (int e = 0; e < 6; ++e) sum += norm(p[kTetTopology.edge[e].a] - p[kTetTopology.edge[e].b]);
+    const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    const double q[3] = {c.x, c.y, c.z};
+    return sum / 6.0 > tolerance * space.size(q);
+}
+
+std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, double tolerance) {
+    const index_t n = m.tets.size();
+    std::vector<std::uint8_t> big(n, 0);
+    tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
+        for (index_t t = r.begin(); t < r.end(); ++t)
+            if (m.tets.vertex(t)[0] != kFreeSlot) big[t] = tet_too_big(m, t, space, tolerance) ? 1 : 0;
+    });
+    std::vector<index_t> faces;
+    for (index_t t = 0; t < n; ++t) {
+        if (!big[t]) continue;
+        for (unsigned f = 0; f < 4; ++f) {
+            const index_t code = m.tets.neighbour(4 * t + f);
+            if (code == kNoAdjacent || !big[code >> 2]) faces.push_back(4 * t + f);
+        }
+    }
+    return faces;
+}
+
+std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space) {
+    std::vector<Candidate> out(faces.size());
+    std::vector<std::uint8_t> ok(faces.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            const index_t t = faces[i] >> 2, f = faces[i] & 3;
+            const index_t* v = m.tets.vertex(t);
+            const auto& node = kTetTopology.face[f].node;
+            const Vec3 a = at(m, v[node[0]]), b = at(m, v[node[1]]), c = at(m, v[node[2]]);
+            const Vec3 g = (1.0 / 3.0) * (a + b + c);
+            const Vec3 outward = cross(b - a, c - a);  // out of t
+            const double len = norm(outward);
+            if (!(len > 0)) continue;
+            const double gq[3] = {g.x, g.y, g.z};
+            const double h = space.size(gq);
+            const double rho2 = (distance2(g, a) + distance2(g, b) + distance2(g, c)) / 3.0;
+            // Apex at distance h from the face's vertices when the face allows it.
+            const double d = std::sqrt(std::max(h * h - rho2, 0.25 * h * h));
+            const Vec3 p = g - (d / len) * outward;
+            const double pp[3] = {p.x, p.y, p.z};
+            const index_t holder = walk_to(m, t, pp, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
+            if (holder == kNoIndex) continue;
+            out[i] = {{p.x, p.y, p.z}, space.size(pp), holder};
+            ok[i] = 1;
+        }
+    });
+    std::vector<Candidate> kept;
+    kept.reserve(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        if (ok[i]) kept.push_back(out[i]);
+    return kept;
+}
+
+std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor) {
+    const std::size_t n = c.size(), m = existing.size() / 3;
+    std::vector<double> ex(m), ey(m), ez(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        ex[i] = existing[3 * i];
+        ey[i] = existing[3 * i + 1];
+        ez[i] = existing[3 * i + 2];
+    }
+    std::vector<double> cx(n), cy(n), cz(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        cx[i] = c[i].p[0];
+        cy[i] = c[i].p[1];
+        cz[i] = c[i].p[2];
+    }
+    // Far enough from existing points: independent per candidate, parallel.
+    std::vector<std::uint8_t> free_of_points(n, 0);
+    if (n) {
+        const PointIndex points(ex, ey, ez);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+            std::vector<Neighbor> near;
+            for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                points.within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+                free_of_points[i] = near.empty() ? 1 : 0;
+            }
+        });
+    }
+    // Among candidates: greedy in order, so earlier ones win whatever the thread count.
+    std::vector<index_t> kept;
+    if (!n) return kept;
+    const PointIndex cands(cx, cy, cz);
+    std::vector<std::uint8_t> taken(n, 0);
+    std::vector<Neighbor> near;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!free_of_points[i]) continue;
+        cands.within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+        const bool clash = std::any_of(near.begin(), near.end(), [&](const Neighbor& q) { return taken[q.index] != 0; });
+        if (clash) continue;
+        taken[i] = 1;
+        kept.push_back(static_cast<index_t>(i));
+    }
+    return kept;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,56 @@
+#pragma once
+// Tet mesh optimisation, the last part of the tet step (paper §5): smoothing that moves a free
+// point only when the worst tet around it gets better, and flips (2-3, 3-2, 4-4, edge removal)
+// that raise the smallest tet collapse of the tets they replace. Both run in parallel on
+// conflict-free sets chosen in a fixed order, so the result depends on the input only: the
+// same arrays for any thread count and any timing.
+//
+// Invariants kept (tet_domain.hpp): every tet positively oriented (exact test), adjacency
+// symmetric, front faces never removed or changed, front points [0, front_points) never moved,
+// no free slots at the end. The tets still fill the same region, so the volume is unchanged.
+#include <cstdint>
+
+#include "engine/tets/tet_domain.hpp"
+
+namespace tubemesh::tets {
+
+struct OptimiseOptions {
+    // Rounds of (flips, then smoothing); optimisation stops earlier when a round changes
+    // nothing. Default 8.
+    int passes = 8;
+    // Flips attack the tets whose collapse is below this value, worst first. Default 0.5: a tet
+    // above it is good enough that changing its neighbourhood risks more than it gains.
+    double flip_threshold = 0.5;
+    // A flip is made only when it raises the smallest collapse of the tets it replaces by more
+    // than this. Default 1e-6: guards against endless flipping between equal configurations.
+    double min_gain = 1e-6;
+    // Largest number of tets around an edge that edge removal tries (3..10). Default 7: larger
+    // rings rarely triangulate into good tets (Shewchuk's experience agrees).
+    int max_edge_ring = 7;
+    // Smoothing sweeps over all free points per pass. Default 2.
+    int smoothing_sweeps = 2;
+    // Points whose worst incident tet is at or above this collapse are not moved. Default 1.0:
+    // every free point is tried (the acceptance test keeps good stars from getting worse).
+    double smoothing_threshold = 1.0;
+    // Worker threads; 0 = the caller's oneTBB arena (its global_control limit applies). The
+    // result is the same for every value.
+    unsigned threads = 0;
+};
+
+struct OptimiseStats {
+    index_t tets_before = 0, tets_after = 0;
+    double min_collapse_before = 0, mean_collapse_before = 0;
+    double min_collapse_after = 0, mean_collapse_after = 0;
+    index_t below_threshold_before = 0, below_threshold_after = 0;  // tets under flip_threshold
+    std::uint64_t flips23 = 0, flips32 = 0, flips44 = 0, edge_removals = 0;
+    std::uint64_t flip_rounds = 0;  // conflict-free parallel rounds of flips
+    std::uint64_t moves = 0;        // accepted point moves
+    std::uint64_t colours = 0;      // largest number of point colours of a smoothing pass
+    int passes = 0;                 // passes run
+    double seconds_flips = 0, seconds_smoothing = 0, seconds_total = 0;
+};
+
+// Throws tubemesh::Error on options out of range; a domain with free slots is compacted first.
+OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options = {});
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,67 @@
+#pragma once
+// Local modifications of boundary recovery: the 2-3 flip, edge removal (3-2, 4-4 and the
+// general n -> 2n-4 flip), point insertion into a star-shaped cavity (Steiner points) and
+// point contraction (Steiner point removal). Each checks its new tets with the exact orient3d
+// and changes nothing when one would be flat or inverted, when it would destroy a locked front
+// edge or face, or when a new element would cross the recovery target. Flips that obey the
+// last rule strictly reduce the number of elements crossing the target, so a recovery loop
+// built on them terminates.
+//
+// These primitives do not know about recovery beyond the Target and the locks: the
+// optimisation step could share them (its own flips are driven by quality instead).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <unordered_set>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/tets/recovery_crossings.hpp"
+#include "engine/tets/recovery_mesh.hpp"
+
+namespace tubemesh::tets {
+
+// Front edges are never removed; front faces are not removed while lock_faces is set (the
+// face-recovery phase: faces already present stay).
+class FrontLocks {
+public:
+    explicit FrontLocks(std::span<const index_t> front);
+    bool edge(index_t u, index_t v) const;
+    bool face(index_t x, index_t y, index_t z) const;
+    bool lock_faces = false;
+
+private:
+    std::unordered_set<std::uint64_t> edges_;
+    struct FaceHash {
+        std::size_t operator()(const std::array<index_t, 3>& k) const;
+    };
+    std::unordered_set<std::array<index_t, 3>, FaceHash> faces_;  // sorted vertex ids
+};
+
+struct FlipCounters {
+    std::uint64_t flips23 = 0;
+    std::uint64_t edge_removals = 0;  // 3-2 (ring 3), 4-4 (ring 4) and larger
+    std::uint64_t flips32 = 0;
+    std::uint64_t flips44 = 0;
+};
+
+// 2-3 flip of the face opposite local vertex f of tet t. `target` may be null.
+bool flip23(RecoveryMesh& m, index_t t, int f, const Target* target, const FrontLocks& locks, FlipCounters& c);
+
+// Removes edge uv: the ring of its n tets is replaced by 2n-4 tets, from the triangulation of
+// the ring polygon that maximises the smallest new tet's collapse measure among those that
+// are valid. Rings larger than max_ring are not tried.
+bool remove_edge(RecoveryMesh& m, index_t u, index_t v, const Target* target, const FrontLocks& locks,
+                 int max_ring, FlipCounters& c);
+
+// Inserts point p, joining it to the boundary of `cavity` (tets forming a region star-shaped
+// from p). Returns the new vertex, or kNoIndex (nothing changed) when a new tet would not be
+// positive or a face inside the cavity is locked.
+index_t insert_point(RecoveryMesh& m, std::span<const index_t> cavity, const double* p, const FrontLocks& locks);
+
+// Removes vertex s by moving it onto the neighbour that leaves the best smallest tet
+// collapse measure, if any move leaves only positive tets. Faces not containing s survive,
+// so front faces and edges are never touched.
+bool contract_point(RecoveryMesh& m, index_t s);
+
+}  // namespace tubemesh::tets

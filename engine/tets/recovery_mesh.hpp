@@ -1,0 +1,89 @@
+#pragma once
+// The mutable tetrahedral mesh of boundary recovery: vertex and neighbour rows as in the
+// kernel's TetStore (4 per slot, neighbour 4*t + f across face f, kNoAdjacent on the box
+// hull), plus what local modification needs and the kernel does not keep: one incident tet
+// per vertex, a free-slot list, and epoch marks for traversals.
+//
+// Every modification (flip, split, contraction) is one call to replace(): remove a set of
+// tets, add tets that fill the same region. replace() relinks the new tets to each other and
+// to the old set's outside neighbours by matching faces, so each operation only has to say
+// which tets it wants, never how the neighbour pointers change.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/delaunay/tet_store.hpp"
+
+namespace tubemesh::tets {
+
+using Tet = std::array<index_t, 4>;
+
+class RecoveryMesh {
+public:
+    // Takes the kernel's tets over `xyz` (3 per point; box corners included).
+    RecoveryMesh(std::vector<double> xyz, const delaunay::TetStore& tets);
+
+    index_t point_count() const { return static_cast<index_t>(xyz_.size() / 3); }
+    const double* point(index_t v) const { return xyz_.data() + std::size_t{3} * v; }
+    const std::vector<double>& xyz() const { return xyz_; }
+    // A new vertex (no tet yet: the caller splits tets with replace()).
+    index_t add_point(const double* p);
+
+    index_t slot_count() const { return static_cast<index_t>(vertex_.size() / 4); }
+    bool alive(index_t t) const { return vertex_[4 * std::size_t{t}] != delaunay::kFreeSlot; }
+    const index_t* vertex(index_t t) const { return vertex_.data() + 4 * std::size_t{t}; }
+    index_t neighbour(index_t code) const { return neighbour_[code]; }
+    Tet tet(index_t t) const { return {vertex(t)[0], vertex(t)[1], vertex(t)[2], vertex(t)[3]}; }
+    // A live tet containing v, or kNoIndex when v is in no tet.
+    index_t incident_tet(index_t v) const { return incident_[v]; }
+
+    // All live tets containing v (its ball), in a deterministic order.
+    void ball(index_t v, std::vector<index_t>& out);
+    // A live tet containing both a and b, or kNoIndex.
+    index_t find_edge(index_t a, index_t b);
+    // The tets around edge ab and the ring of their other vertices, ordered so that tet i is
+    // (a, b, ring[i], ring[i+1 mod n]) and orient3d(a, b, ring[i], ring[i+1]) > 0. False when
+    // the edge is missing or on the box hull (its ring is open).
+    bool edge_ring(index_t a, index_t b, std::vector<index_t>& tets, std::vector<index_t>& ring);
+    // The face of tet t opposite local vertex f is a face of the mesh; its vertices with the
+    // normal pointing out of t.
+    std::array<index_t, 3> face(index_t t, int f) const;
+    // The tet with face abc (any order), and the local index of its fourth vertex, on the side
+    // where orient3d(a, b, c, d) has sign `side` (+1 or -1); kNoIndex when there is none.
+    index_t find_face(index_t a, index_t b, index_t c, int side, int* local = nullptr);
+
+    // Removes `old_tets` and adds `new_tets` (each positively oriented, checked by the caller)
+    // filling the same region; new slots reuse the old ones first. Returns false, changing
+    // nothing, when the new tets' faces do not pair up with each other and the old set's boundary
+    // (e.g. a contraction that would glue two faces). The new tets' slots go to `added`.
+    bool replace(std::span<const index_t> old_tets, std::span<const Tet> new_tets, std::vector<index_t>* added = nullptr);
+
+    // Epoch marks on tets for traversals: next_epoch() invalidates all marks.
+    std::uint32_t next_epoch();
+    bool marked(index_t t, std::uint32_t epoch) const { return mark_[t] == epoch; }
+    void set_mark(index_t t, std::uint32_t epoch) { mark_[t] = epoch; }
+
+    // Live tets, compacted into a kernel store (neighbours renumbered).
+    delaunay::TetStore compact(std::span<const std::uint8_t> keep) const;
+
+private:
+    std::vector<double> xyz_;
+    std::vector<index_t> vertex_;
+    std::vector<index_t> neighbour_;
+    std::vector<index_t> incident_;
+    std::vector<index_t> free_;
+    std::vector<std::uint32_t> mark_;
+    std::uint32_t epoch_ = 0;
+    // Scratch of replace().
+    struct BoundaryFace {
+        std::array<index_t, 3> key;  // sorted vertex ids
+        index_t outside;             // neighbour code outside the old set, or kNoAdjacent
+        bool used;
+    };
+    std::vector<BoundaryFace> boundary_;
+    std::vector<index_t> slots_;
+};
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,25 @@
+#pragma once
+// Smoothing of the free points of a TetDomain (paper §5): a point moves towards the centroid
+// of its neighbours, or towards the position that makes its worst tet regular, and the move is
+// kept only when the worst tet around the point gets better and none inverts (exact orient3d).
+// Front points [0, front_points) never move; the topology does not change.
+//
+// Parallel and deterministic: points are greedily coloured in index order so that no two
+// points of a colour share a tet; the points of one colour move at once (tbb::parallel_for),
+// each reading only its own tets, whose other points do not move in that colour.
+#include <cstdint>
+
+#include "engine/tets/tet_domain.hpp"
+
+namespace tubemesh::tets {
+
+struct SmoothingCounts {
+    std::uint64_t moves = 0;    // accepted moves
+    std::uint64_t colours = 0;  // colours of the point colouring
+};
+
+// `sweeps` sweeps over the free points whose worst tet is below `threshold`; a move must raise
+// the worst collapse around the point by more than min_gain. The domain has no free slots.
+SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain);
+
+}  // namespace tubemesh::tets

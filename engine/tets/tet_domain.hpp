@@ -1,0 +1,38 @@
+#pragma once
+// The tet step's working mesh (paper §5): the tetrahedra that fill the region bounded by the
+// closed front (surface triangles + the pyramids' free triangles), handed from boundary
+// recovery to interior-point refinement to optimisation.
+//
+//   xyz              3 coordinates per point. Points [0, front_points) are the front's nodes,
+//                    in the caller's order; they never move and are never removed. Points
+//                    after them are Steiner points of the recovery and interior points.
+//   tets             the kernel's store (engine/delaunay/tet_store.hpp): 4 point ids per tet,
+//                    positively oriented (orient3d(v0, v1, v2, v3) > 0); neighbour 4*t + f
+//                    across face f (opposite vertex f). A face with kNoAdjacent is a front
+//                    triangle: the region's boundary is exactly the front, so cavities and
+//                    flips stop there by construction. Free slots (vertex[0] == kFreeSlot)
+//                    may exist while a phase runs; every phase leaves none behind.
+//   front            3 point ids per front triangle, normal pointing out of the region
+//                    (the order of PipelineResult::tet_front).
+//
+// Every phase keeps the invariants above, so any phase can be tested on its own on a domain
+// built by delaunay() of points in a box (the hull faces are then the front).
+#include <cstddef>
+#include <vector>
+
+#include "engine/core/types.hpp"
+#include "engine/delaunay/tet_store.hpp"
+
+namespace tubemesh::tets {
+
+struct TetDomain {
+    std::vector<double> xyz;
+    index_t front_points = 0;
+    delaunay::TetStore tets;
+    std::vector<index_t> front;
+
+    index_t point_count() const { return static_cast<index_t>(xyz.size() / 3); }
+    const double* point(index_t p) const { return xyz.data() + std::size_t{3} * p; }
+};
+
+}  // namespace tubemesh::tets

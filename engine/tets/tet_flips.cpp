@@ -1,0 +1,215 @@
+#include "engine/tets/tet_flips.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace tubemesh::tets {
+
+using delaunay::kFreeSlot;
+using delaunay::kNoAdjacent;
+
+namespace {
+
+bool all_positive(const TetDomain& dom, const FlipPlan& plan) {
+    for (int j = 0; j < plan.new_count; ++j)
+        if (!positively_oriented(dom, plan.new_tets[j])) return false;
+    return true;
+}
+
+double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count) {
+    double q = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < count; ++i) {
+        const index_t* v = dom.tets.vertex(tets[i]);
+        q = std::min(q, collapse_of(dom, v[0], v[1], v[2], v[3]));
+    }
+    return q;
+}
+
+using FaceKey = std::array<index_t, 3>;
+
+FaceKey face_key(index_t a, index_t b, index_t c) {
+    FaceKey k{a, b, c};
+    std::sort(k.begin(), k.end());
+    return k;
+}
+
+FaceKey face_key(const index_t* v, int f) {
+    const auto& l = kTetFaceToward[f];
+    return face_key(v[l[0]], v[l[1]], v[l[2]]);
+}
+
+}  // namespace
+
+bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan) {
+    const index_t n = dom.tets.neighbour(4 * t + static_cast<index_t>(f));
+    if (n == kNoAdjacent) return false;
+    const index_t other = n >> 2;
+    const index_t* v = dom.tets.vertex(t);
+    const auto& l = kTetFaceToward[f];
+    const index_t a = v[l[0]], b = v[l[1]], c = v[l[2]], d = v[f];
+    const index_t e = dom.tets.vertex(other)[n & 3];
+    plan.kind = FlipKind::Flip23;
+    plan.old_count = 2;
+    plan.old_tets[0] = t;
+    plan.old_tets[1] = other;
+    plan.new_count = 3;
+    // (a, b, c) is counter-clockwise seen from d and e lies on the other side, so each new
+    // tet around the edge d-e is oriented (face edge, e, d).
+    plan.new_tets[0] = {a, b, e, d};
+    plan.new_tets[1] = {b, c, e, d};
+    plan.new_tets[2] = {c, a, e, d};
+    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), 2);
+    plan.new_min = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < 3; ++j) plan.new_min = std::min(plan.new_min, collapse_of(dom, plan.new_tets[j]));
+    return plan.new_min > 0 && all_positive(dom, plan);
+}
+
+bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan) {
+    EdgeShell shell;
+    if (!edge_shell(dom, t, la, lb, std::min(max_ring, EdgeShell::kMaxSize), shell)) return false;
+    const int n = shell.size;
+    if (n < 3) return false;
+    const auto& p = shell.ring;
+    constexpr int N = EdgeShell::kMaxSize;
+    // best[i][j]: the largest smallest collapse over the triangulations of the sub-polygon
+    // p_i .. p_j (closed by the chord p_i p_j), each triangle (p_i, p_k, p_j) making the tets
+    // (p_i, p_k, p_j, b) and (p_k, p_i, p_j, a): the ring runs counter-clockwise seen from b.
+    std::array<std::array<double, N>, N> best{};
+    std::array<std::array<int, N>, N> split{};
+    for (int i = 0; i + 1 < n; ++i) best[i][i + 1] = std::numeric_limits<double>::infinity();
+    for (int gap = 2; gap < n; ++gap) {
+        for (int i = 0; i + gap < n; ++i) {
+            const int j = i + gap;
+            double q_best = -std::numeric_limits<double>::infinity();
+            int k_best = i + 1;
+            for (int k = i + 1; k < j; ++k) {
+                double q = std::min(best[i][k], best[k][j]);
+                if (q <= q_best) continue;
+                q = std::min(q, collapse_of(dom, p[i], p[k], p[j], shell.b));
+                if (q <= q_best) continue;
+                q = std::min(q, collapse_of(dom, p[k], p[i], p[j], shell.a));
+                if (q > q_best) {
+                    q_best = q;
+                    k_best = k;
+                }
+            }
+            best[i][j] = q_best;
+            split[i][j] = k_best;
+        }
+    }
+    plan.kind = n == 3 ? FlipKind::Flip32 : n == 4 ? FlipKind::Flip44 : FlipKind::EdgeRemoval;
+    plan.old_count = n;
+    std::copy_n(shell.tets.begin(), n, plan.old_tets.begin());
+    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), n);
+    plan.new_min = best[0][n - 1];
+    plan.new_count = 0;
+    std::array<std::array<int, 2>, N> stack{};
+    int top = 0;
+    stack[top++] = {0, n - 1};
+    while (top > 0) {
+        const auto [i, j] = stack[--top];
+        if (j - i < 2) continue;
+        const int k = split[i][j];
+        plan.new_tets[plan.new_count++] = {p[i], p[k], p[j], shell.b};
+        plan.new_tets[plan.new_count++] = {p[k], p[i], p[j], shell.a};
+        stack[top++] = {i, k};
+        stack[top++] = {k, j};
+    }
+    return plan.new_min > 0 && all_positive(dom, plan);
+}
+
+int apply_flip(TetDomain& dom, const FlipPlan& plan, std::span<const index_t> spare) {
+    auto& store = dom.tets;
+    const auto is_old = [&](index_t u) {
+        return std::find(plan.old_tets.begin(), plan.old_tets.begin() + plan.old_count, u) !=
+               plan.old_tets.begin() + plan.old_count;
+    };
+    // The cavity's outside, read before any old slot is overwritten.
+    struct Outside {
+        FaceKey key;
+        index_t code;
+    };
+    std::array<Outside, 4 * FlipPlan::kMaxOld> outside{};
+    int outside_count = 0;
+    for (int i = 0; i < plan.old_count; ++i) {
+        const index_t t = plan.old_tets[i];
+        for (int f = 0; f < 4; ++f) {
+            const index_t n = store.neighbour(4 * t + static_cast<index_t>(f));
+            if (n != kNoAdjacent && is_old(n >> 2)) continue;
+            outside[outside_count++] = {face_key(store.vertex(t), f), n};
+        }
+    }
+    const int spare_used = std::max(0, plan.new_count - plan.old_count);
+    if (static_cast<std::size_t>(spare_used) > spare.size())
+        throw Error("tet optimisation: a flip needs more spare slots than it was given (internal error)");
+    std::array<index_t, FlipPlan::kMaxNew> slot{};
+    for (int j = 0; j < plan.new_count; ++j)
+        slot[j] = j < plan.old_count ? plan.old_tets[j] : spare[static_cast<std::size_t>(j - plan.old_count)];
+    for (int j = plan.new_count; j < plan.old_count; ++j) std::fill_n(store.vertex(plan.old_tets[j]), 4, kFreeSlot);
+    for (int j = 0; j < plan.new_count; ++j) std::copy_n(plan.new_tets[j].begin(), 4, store.vertex(slot[j]));
+
+    std::array<std::array<FaceKey, 4>, FlipPlan::kMaxNew> keys{};
+    for (int j = 0; j < plan.new_count; ++j)
+        for (int f = 0; f < 4; ++f) keys[j][f] = face_key(plan.new_tets[j].data(), f);
+    for (int j = 0; j < plan.new_count; ++j) {
+        for (int f = 0; f < 4; ++f) {
+            const index_t code = 4 * slot[j] + static_cast<index_t>(f);
+            index_t across = kNoIndex;
+            bool found = false;
+            for (int j2 = 0; j2 < plan.new_count && !found; ++j2) {
+                if (j2 == j) continue;
+                for (int f2 = 0; f2 < 4; ++f2) {
+                    if (keys[j2][f2] == keys[j][f]) {
+                        across = 4 * slot[j2] + static_cast<index_t>(f2);
+                        found = true;
+                        break;
+                    }
+                }
+            }
+            for (int o = 0; o < outside_count && !found; ++o) {
+                if (outside[o].key == keys[j][f]) {
+                    across = outside[o].code;
+                    found = true;
+                    if (across != kNoAdjacent) store.neighbour(across) = code;
+                }
+            }
+            if (!found) throw Error("tet optimisation: a flipped tet has a face that matches no neighbour (internal error)");
+            store.neighbour(code) = across;
+        }
+    }
+    return spare_used;
+}
+
+void apply_flip_appending(TetDomain& dom, const FlipPlan& plan) {
+    const int extra = std::max(0, plan.extra_slots());
+    std::vector<index_t> spare(static_cast<std::size_t>(extra));
+    const index_t first = dom.tets.size();
+    dom.tets.reserve(std::size_t{first} + spare.size());
+    dom.tets.set_size(first + static_cast<index_t>(extra));
+    for (int i = 0; i < extra; ++i) spare[static_cast<std::size_t>(i)] = first + static_cast<index_t>(i);
+    apply_flip(dom, plan, spare);
+}
+
+void compact_tets(TetDomain& dom) {
+    auto& store = dom.tets;
+    const index_t n = store.size();
+    std::vector<index_t> renumber(n, kNoIndex);
+    index_t live = 0;
+    for (index_t t = 0; t < n; ++t)
+        if (store.vertex(t)[0] != kFreeSlot) renumber[t] = live++;
+    if (live == n) return;
+    // A live tet only moves down, onto a slot already read: one pass in place.
+    for (index_t t = 0; t < n; ++t) {
+        const index_t to = renumber[t];
+        if (to == kNoIndex) continue;
+        for (index_t f = 0; f < 4; ++f) {
+            const index_t code = store.neighbour(4 * t + f);
+            store.vertex(to)[f] = store.vertex(t)[f];
+            store.neighbour(4 * to + f) = code == kNoAdjacent ? kNoAdjacent : 4 * renumber[code >> 2] + (code & 3);
+        }
+    }
+    store.set_size(live);
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,29 @@
+#include "geom/face_properties.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+
+#include <string>
+
+#include "engine/core/types.hpp"
+#include "geom/model_occt.hpp"
+
+namespace tubemesh::geom {
+
+FaceProperties face_properties(const Model& model, int face_id) {
+    if (face_id < 1 || face_id > model.face_count())
+        throw Error("face_" + std::to_string(face_id) + " is not a face of the model (it has " +
+                    std::to_string(model.face_count()) + ")");
+    const TopoDS_Face face = face_of(model, face_id);
+    FaceProperties p;
+    // The adaptive integration, for the same reason as Model::volume: the fixed-order default
+    // is far off on thin B-spline faces (the tube walls).
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face, props, 1e-9);
+    p.area = props.Mass();
+    p.planar = BRepAdaptor_Surface(face, /*restriction=*/false).GetType() == GeomAbs_Plane;
+    return p;
+}
+
+}  // namespace tubemesh::geom

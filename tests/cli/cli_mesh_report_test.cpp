@@ -1,0 +1,133 @@
+// `tubemesh mesh` outputs: the --report JSON matches the written mesh, --circ / --layers change
+// the hex counts as the ring's numbering says (hexes = stations-1 layers x L x n), the .msh
+// holds the pipe wall, face and volume groups, progress lines appear when stdout is not a
+// terminal, and --quiet prints nothing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "engine/io/mesh_io.hpp"
+#include "tests/support/process.hpp"
+
+namespace {
+
+using tubemesh::testing::run_command;
+using tubemesh::testing::shell_quote;
+using tubemesh::testing::TempDir;
+
+std::string cli() { return shell_quote(TUBEMESH_CLI); }
+std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
+
+nlohmann::json read_json(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return nlohmann::json::parse(in);
+}
+
+struct Meshed {
+    nlohmann::json report;
+    tubemesh::HybridMesh mesh;
+};
+
+Meshed mesh_pipe(const TempDir& dir, const std::string& extra) {
+    const auto step = dir / "pipe.step";
+    if (!std::filesystem::exists(step)) {
+        const auto made = run_command(cli() + " make-block --preset straight-pipe -o " + q(step));
+        EXPECT_EQ(made.exit_code, 0) << made.err;
+    }
+    const auto r = run_command(cli() + " mesh " + q(step) + " -o " + q(dir / "m.msh") + " --report " +
+                               q(dir / "r.json") + " --quiet " + extra);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return {read_json(dir / "r.json"), tubemesh::read_msh(dir / "m.msh")};
+}
+
+TEST(CliMeshReport, JsonCountsMatchTheWrittenMesh) {
+    TempDir dir;
+    const Meshed m = mesh_pipe(dir, "");
+    const auto& j = m.report;
+    EXPECT_EQ(j["nodes"].get<unsigned>(), m.mesh.point_count());
+    EXPECT_EQ(j["hexes"].get<unsigned>(), m.mesh.cell_count(tubemesh::CellKind::Hex));
+    EXPECT_EQ(j["pyramids"].get<unsigned>(), m.mesh.cell_count(tubemesh::CellKind::Pyramid));
+    EXPECT_EQ(j["tets"].get<unsigned>(), m.mesh.cell_count(tubemesh::CellKind::Tet));
+    EXPECT_EQ(j["boundary_triangles"].get<unsigned>(), m.mesh.face_count(tubemesh::FaceKind::Tri));
+    EXPECT_EQ(j["quality"]["hex_scaled_jacobian"]["count"].get<unsigned>(), m.mesh.cell_count(tubemesh::CellKind::Hex));
+    EXPECT_GT(j["hexes"].get<unsigned>(), 0u);
+    EXPECT_EQ(j["pyramids"].get<unsigned>() * 2, j["hexes"].get<unsigned>());  // one per outer quad, L = 2
+    double sum = 0;
+    for (const auto& p : j["phases"]) sum += p["seconds"].get<double>();
+    EXPECT_NEAR(sum, j["total_seconds"].get<double>(), 1e-9);
+    std::vector<std::string> names;
+    for (const auto& p : j["phases"]) names.push_back(p["name"]);
+    for (const char* want : {"import", "tubes", "sizes", "discretize", "sweep", "surface", "pyramids", "check"})
+        EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+}
+
+// The sweep also resamples the stations (axial aspect, condition cap), so the count is not
+// simply proportional to n or L; the ring's numbering is: hexes = L x outer quads, and the
+// outer quads are n per axial layer.
+TEST(CliMeshReport, CircAndLayersSetTheRingNumbering) {
+    TempDir dir;
+    unsigned previous = 0;
+    for (const auto& [n, layers] : {std::pair{8u, 2u}, {16u, 2u}, {16u, 3u}}) {
+        const nlohmann::json j = mesh_pipe(dir, "--until sweep --circ " + std::to_string(n) + " --layers " +
+                                                    std::to_string(layers)).report;
+        nlohmann::json sweep, disc;
+        for (const auto& p : j["phases"]) {
+            if (p["name"] == "sweep") sweep = p["counts"];
+            if (p["name"] == "discretize") disc = p["counts"];
+        }
+        const unsigned hexes = j["hexes"].get<unsigned>();
+        const unsigned outer = sweep["outer quads"].get<unsigned>();
+        EXPECT_EQ(disc["nodes around (fewest)"].get<unsigned>(), n);
+        EXPECT_EQ(hexes, layers * outer) << n << " " << layers;
+        EXPECT_EQ(outer % n, 0u) << n << " " << layers;
+        EXPECT_GT(hexes, previous);
+        previous = hexes;
+    }
+}
+
+TEST(CliMeshReport, MshHoldsPipeFaceAndVolumeGroups) {
+    TempDir dir;
+    const Meshed m = mesh_pipe(dir, "");
+    const auto& s = m.mesh.surface_group_names;
+    EXPECT_NE(std::find(s.begin(), s.end(), "pipe_1"), s.end());
+    // The box's six faces: every non-wall B-rep face is a group.
+    EXPECT_EQ(std::count_if(s.begin(), s.end(), [](const std::string& g) { return g.rfind("face_", 0) == 0; }), 6);
+    const auto& r = m.mesh.region_names;
+    EXPECT_NE(std::find(r.begin(), r.end(), "hex_ring"), r.end());
+    EXPECT_NE(std::find(r.begin(), r.end(), "pyramids"), r.end());
+}
+
+TEST(CliMeshReport, PlainProgressLinesWhenNotATerminal) {
+    TempDir dir;
+    ASSERT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step")).exit_code, 0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "x.step") + " -o " + q(dir / "y.msh"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* phase : {"import", "sweep", "surface", "pyramids", "check"})
+        EXPECT_NE(r.out.find(std::string("progress: ") + phase + " "), std::string::npos) << phase << "\n" << r.out;
+    EXPECT_EQ(r.out.find('\r'), std::string::npos);  // no terminal control in a log
+    EXPECT_NE(r.out.find("Total time"), std::string::npos);
+    EXPECT_NE(r.out.find("Elements / second"), std::string::npos);
+}
+
+TEST(CliMeshReport, QuietPrintsNothingAtAll) {
+    TempDir dir;
+    ASSERT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step")).exit_code, 0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "x.step") + " -o " + q(dir / "y.msh") + " --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "y.msh"));
+}
+
+TEST(CliMeshReport, NoInputNoOutputWritesTheDamBlockFiles) {
+    TempDir dir;
+    const auto r = run_command("cd " + q(dir.path()) + " && " + cli() + " mesh --until sweep --quiet");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "dam_block.msh"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "dam_block.vtu"));
+}
+
+}  // namespace

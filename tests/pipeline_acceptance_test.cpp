@@ -1,0 +1,156 @@
+// Acceptance of issues 4 (hex rings), 5 (surface) and 6 (pyramid layer) through the real
+// pipeline, on every builder preset, on random blocks (geom/builders/random_block.hpp) and on
+// pipes close to each other and to a face: pipeline_acceptance_checks.hpp lists what is
+// measured and the bars.
+//
+// One source, three executables:
+//  * test_pipeline_acceptance (CI): every preset, seeds 1-10 and the close pipes, against the
+//    bars that hold today.
+//  * test_pipeline_acceptance_heavy (TUBEMESH_ACCEPTANCE_HEAVY, label heavy): seeds 11-50.
+//  * test_pipeline_acceptance_gaps (TUBEMESH_ACCEPTANCE_GAPS, labels heavy and known_gap): the
+//    bars that still fail on some blocks, one test per bar and block, so each can be
+//    relabelled on its own once fixed: wall nodes within 1e-7 r on B-spline walls, triangle
+//    angles, flat-face areas, neighbour sizes within 1.5.
+// One ctest test per block and bar, so `ctest -j` spreads them.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geom/builders/presets.hpp"
+#include "geom/builders/random_block.hpp"
+#include "tests/pipeline_acceptance_checks.hpp"
+
+namespace tubemesh::acceptance {
+namespace {
+
+// The paper's three examples and the serpentine lift: where issue 6 sets the pyramid bar.
+bool pyramid_quality_preset(const std::string& name) {
+    return name == "paper-ex1" || name == "paper-ex2" || name == "paper-ex3" || name == "serpentine-lift";
+}
+
+std::string param_name(std::string n) {
+    for (char& c : n)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return n;
+}
+
+// Measured once per process: the tests of one block share one run of the pipeline.
+const CaseFigures& figures(const std::string& name, const geom::BlockSpec& spec) {
+    static std::map<std::string, CaseFigures> cache;
+    auto it = cache.find(name);
+    if (it == cache.end()) {
+        it = cache.emplace(name, measure_case(name, spec)).first;
+        std::printf("%s", summary(it->second).c_str());
+    }
+    return it->second;
+}
+
+const CaseFigures& preset_figures(const std::string& name) { return figures(name, geom::preset_spec(name)); }
+const CaseFigures& seed_figures(int seed) {
+    return figures("seed " + std::to_string(seed), geom::random_block_spec(static_cast<std::uint64_t>(seed)));
+}
+
+std::vector<std::string> preset_names() {
+    std::vector<std::string> names;
+    for (const geom::PresetInfo& p : geom::preset_list()) names.push_back(p.name);
+    return names;
+}
+
+std::vector<int> seeds(int first, int last) {
+    std::vector<int> s;
+    for (int i = first; i <= last; ++i) s.push_back(i);
+    return s;
+}
+
+// Two straight pipes of diameter 0.1 along x, `gap` apart (axis to axis), their axes `height`
+// over the bottom face of a 3 x 2 x 1.5 box: the sizing guards leave little room between the
+// ideal apexes and the other ring's layer or the face, so fronts there are rejected by the
+// normal criteria and served by existing nodes, relaxed criteria or try nodes. The layer must
+// still close without self-intersection.
+const CaseFigures& close_pipes_figures(double gap, double height) {
+    geom::BlockSpec s;
+    s.name = "close-pipes";
+    s.length_unit = "metre";
+    s.host.kind = geom::HostSpec::Kind::Box;
+    s.host.size = {3, 2, 1.5};
+    for (double y : {0.9, 0.9 + gap}) {
+        geom::PipeSpec p;
+        p.kind = geom::PathKind::Line;
+        p.diameter = 0.1;
+        p.points = {{0, y, height}, {3, y, height}};
+        s.pipes.push_back(p);
+    }
+    return figures("close pipes " + std::to_string(gap) + " apart at " + std::to_string(height), s);
+}
+// What the default suite runs; closer pipes (0.35 apart at 0.25) fail: see the gaps suite.
+constexpr double kCloseGap = 0.6, kCloseHeight = 0.35;
+
+std::string preset_test_name(const ::testing::TestParamInfo<std::string>& info) { return param_name(info.param); }
+std::string seed_test_name(const ::testing::TestParamInfo<int>& info) { return "seed" + std::to_string(info.param); }
+
+void expect_accepted(const CaseFigures& f) {
+    expect_rings_accepted(f);
+    expect_surface_accepted(f);
+    expect_pyramid_layer_accepted(f);
+}
+
+class PresetAcceptance : public ::testing::TestWithParam<std::string> {};
+class SeedAcceptance : public ::testing::TestWithParam<int> {};
+
+#ifndef TUBEMESH_ACCEPTANCE_GAPS
+
+TEST_P(PresetAcceptance, RingsSurfaceAndPyramids) {
+    const CaseFigures& f = preset_figures(GetParam());
+    expect_accepted(f);
+    if (pyramid_quality_preset(GetParam())) expect_pyramid_quality_accepted(f);
+}
+
+TEST_P(SeedAcceptance, RingsSurfaceAndPyramids) { expect_accepted(seed_figures(GetParam())); }
+
+#ifndef TUBEMESH_ACCEPTANCE_HEAVY
+INSTANTIATE_TEST_SUITE_P(All, PresetAcceptance, ::testing::ValuesIn(preset_names()), preset_test_name);
+INSTANTIATE_TEST_SUITE_P(Random, SeedAcceptance, ::testing::ValuesIn(seeds(1, 10)), seed_test_name);
+
+TEST(CloseTubes, RejectedFrontsAreServedWithRelaxedCriteria) {
+    const CaseFigures& f = close_pipes_figures(kCloseGap, kCloseHeight);
+    expect_accepted(f);
+    const PyramidStats& st = f.pyramids.stats;
+    index_t tries = 0;
+    for (index_t k : st.try_node) tries += k;
+    EXPECT_GT(st.rejected, 0u) << "no front was rejected: the pipes are not close enough to test the relaxed pass";
+    EXPECT_GT(st.existing_relaxed + tries, 0u) << "no front needed the relaxed criteria";
+}
+#else
+INSTANTIATE_TEST_SUITE_P(Random, SeedAcceptance, ::testing::ValuesIn(seeds(11, 50)), seed_test_name);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(PresetAcceptance);
+#endif
+
+#else  // TUBEMESH_ACCEPTANCE_GAPS
+
+TEST_P(PresetAcceptance, WallNodesWithin1e7R) { expect_wall_nodes_accepted(preset_figures(GetParam())); }
+TEST_P(PresetAcceptance, TriangleAngles) { expect_triangle_angles_accepted(preset_figures(GetParam())); }
+TEST_P(PresetAcceptance, FlatFaceAreas) { expect_flat_area_accepted(preset_figures(GetParam())); }
+TEST_P(PresetAcceptance, NeighbourSizesWithin1_5) { expect_neighbor_ratio_accepted(preset_figures(GetParam())); }
+TEST_P(SeedAcceptance, WallNodesWithin1e7R) { expect_wall_nodes_accepted(seed_figures(GetParam())); }
+TEST_P(SeedAcceptance, TriangleAngles) { expect_triangle_angles_accepted(seed_figures(GetParam())); }
+TEST_P(SeedAcceptance, FlatFaceAreas) { expect_flat_area_accepted(seed_figures(GetParam())); }
+TEST_P(SeedAcceptance, NeighbourSizesWithin1_5) { expect_neighbor_ratio_accepted(seed_figures(GetParam())); }
+
+INSTANTIATE_TEST_SUITE_P(All, PresetAcceptance, ::testing::ValuesIn(preset_names()), preset_test_name);
+INSTANTIATE_TEST_SUITE_P(Random, SeedAcceptance, ::testing::ValuesIn(seeds(1, 50)), seed_test_name);
+
+// Pipes 0.35 apart, 0.25 over the bottom face, passed by the sizing guards: the pyramid step
+// throws (40 fronts near the x = 0 host face find no pyramid after 8 drawbacks).
+TEST(CloseTubes, VeryClosePipesGetAClosedPyramidLayer) {
+    const CaseFigures& f = close_pipes_figures(0.35, 0.25);
+    expect_accepted(f);
+}
+
+#endif
+
+}  // namespace
+}  // namespace tubemesh::acceptance

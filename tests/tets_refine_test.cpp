@@ -1,0 +1,356 @@
+// Interior points of the tet step: control space, advancing-front refinement through the
+// constrained Delaunay kernel, on a convex box and a non-convex L-shaped domain.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "engine/delaunay/delaunay.hpp"
+#include "engine/delaunay/triangulation.hpp"
+#include "engine/mesh/point_index.hpp"
+#include "engine/mesh/topology.hpp"
+#include "engine/predicates/predicates.hpp"
+#include "engine/quality/quality.hpp"
+#include "engine/tets/boundary_recovery.hpp"
+#include "engine/tets/control_space.hpp"
+#include "engine/tets/refine.hpp"
+
+namespace {
+
+using namespace tubemesh;
+using namespace tubemesh::tets;
+using delaunay::kNoAdjacent;
+namespace pred = tubemesh::predicates;
+
+using Tri = std::array<index_t, 3>;
+
+Tri sorted(index_t a, index_t b, index_t c) {
+    Tri t{a, b, c};
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+// The boundary faces (kNoAdjacent) of the domain's tets, outward, as the front.
+std::vector<index_t> boundary_faces(const delaunay::TetStore& tets) {
+    std::vector<index_t> out;
+    for (index_t t = 0; t < tets.size(); ++t)
+        for (unsigned f = 0; f < 4; ++f)
+            if (tets.neighbour(4 * t + f) == kNoAdjacent)
+                for (int k = 0; k < 3; ++k) out.push_back(tets.vertex(t)[kTetTopology.face[f].node[k]]);
+    return out;
+}
+
+// Points on the surface of [0,a]x[0,b]x[0,c] on a grid of spacing about s (no duplicates).
+void box_surface(double a, double b, double c, double s, std::vector<double>& x, std::vector<double>& y,
+                 std::vector<double>& z) {
+    const int na = std::max(1, int(std::lround(a / s))), nb = std::max(1, int(std::lround(b / s))),
+              nc = std::max(1, int(std::lround(c / s)));
+    for (int i = 0; i <= na; ++i)
+        for (int j = 0; j <= nb; ++j)
+            for (int k = 0; k <= nc; ++k) {
+                if (i != 0 && i != na && j != 0 && j != nb && k != 0 && k != nc) continue;
+                x.push_back(a * i / na);
+                y.push_back(b * j / nb);
+                z.push_back(c * k / nc);
+            }
+}
+
+TetDomain make_domain(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                      delaunay::TetStore tets) {
+    TetDomain d;
+    for (std::size_t i = 0; i < x.size(); ++i) d.xyz.insert(d.xyz.end(), {x[i], y[i], z[i]});
+    d.front_points = d.point_count();
+    d.front = boundary_faces(tets);
+    d.tets = std::move(tets);
+    return d;
+}
+
+TetDomain box_domain() {
+    std::vector<double> x, y, z;
+    box_surface(1.0, 1.0, 1.0, 0.1, x, y, z);
+    delaunay::DelaunayOptions o;
+    o.threads = 1;
+    return make_domain(x, y, z, delaunay::delaunay(x, y, z, o).tets);
+}
+
+// An L: [0,2]x[0,1]x[0,1] plus [0,1]x[1,2]x[0,1]. The Delaunay of its surface points, minus the
+// tets whose centroid is outside the L; the remaining boundary is the front.
+TetDomain l_domain() {
+    std::vector<double> x, y, z;
+    box_surface(2.0, 2.0, 1.0, 0.125, x, y, z);
+    std::vector<double> lx, ly, lz;
+    const auto inside = [](double px, double py) { return !(px > 1.0 + 1e-12 && py > 1.0 + 1e-12); };
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (inside(x[i], y[i])) lx.push_back(x[i]), ly.push_back(y[i]), lz.push_back(z[i]);
+    // The reentrant walls x = 1 (y in [1,2]) and y = 1 (x in [1,2]).
+    for (int j = 1; j < 8; ++j)
+        for (int k = 0; k <= 8; ++k) {
+            lx.push_back(1.0), ly.push_back(1.0 + j / 8.0), lz.push_back(k / 8.0);
+            lx.push_back(1.0 + j / 8.0), ly.push_back(1.0), lz.push_back(k / 8.0);
+        }
+    delaunay::DelaunayOptions o;
+    o.threads = 1;
+    delaunay::TetStore all = delaunay::delaunay(lx, ly, lz, o).tets;
+    std::vector<index_t> keep_id(all.size(), kNoIndex);
+    index_t kept = 0;
+    for (index_t t = 0; t < all.size(); ++t) {
+        double cx = 0, cy = 0;
+        for (int i = 0; i < 4; ++i) cx += lx[all.vertex(t)[i]] / 4, cy += ly[all.vertex(t)[i]] / 4;
+        if (inside(cx, cy)) keep_id[t] = kept++;
+    }
+    delaunay::TetStore tets;
+    tets.reserve(kept);
+    tets.set_size(kept);
+    for (index_t t = 0; t < all.size(); ++t) {
+        if (keep_id[t] == kNoIndex) continue;
+        std::copy_n(all.vertex(t), 4, tets.vertex(keep_id[t]));
+        for (unsigned f = 0; f < 4; ++f) {
+            const index_t code = all.neighbour(4 * t + f);
+            tets.neighbour(4 * keep_id[t] + f) =
+                code == kNoAdjacent || keep_id[code >> 2] == kNoIndex ? kNoAdjacent : 4 * keep_id[code >> 2] + (code & 3);
+        }
+    }
+    return make_domain(lx, ly, lz, std::move(tets));
+}
+
+double volume(const TetDomain& d) {
+    double v = 0;
+    for (index_t t = 0; t < d.tets.size(); ++t) {
+        const index_t* q = d.tets.vertex(t);
+        const double* a = d.point(q[0]);
+        double e[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k) e[i][k] = d.point(q[i + 1])[k] - a[k];
+        v += (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+              e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+             6.0;
+    }
+    return v;
+}
+
+void expect_valid(const TetDomain& d, const std::vector<index_t>& front) {
+    std::set<Tri> boundary;
+    for (index_t t = 0; t < d.tets.size(); ++t) {
+        const index_t* v = d.tets.vertex(t);
+        for (int i = 0; i < 4; ++i) ASSERT_LT(v[i], d.point_count());
+        ASSERT_GT(pred::orient3d(d.point(v[0]), d.point(v[1]), d.point(v[2]), d.point(v[3])), 0) << "tet " << t;
+        for (unsigned f = 0; f < 4; ++f) {
+            const auto& node = kTetTopology.face[f].node;
+            const index_t code = d.tets.neighbour(4 * t + f);
+            if (code == kNoAdjacent) {
+                boundary.insert(sorted(v[node[0]], v[node[1]], v[node[2]]));
+                continue;
+            }
+            ASSERT_EQ(d.tets.neighbour(code), 4 * t + f);
+            const index_t* w = d.tets.vertex(code >> 2);
+            const auto& node2 = kTetTopology.face[code & 3].node;
+            ASSERT_EQ(sorted(v[node[0]], v[node[1]], v[node[2]]), sorted(w[node2[0]], w[node2[1]], w[node2[2]]));
+        }
+    }
+    std::set<Tri> want;
+    for (std::size_t i = 0; i < front.size(); i += 3) want.insert(sorted(front[i], front[i + 1], front[i + 2]));
+    EXPECT_EQ(boundary, want) << "the boundary is not exactly the front";
+    std::vector<std::uint8_t> used(d.point_count(), 0);
+    for (index_t v : d.tets.vertices()) used[v] = 1;
+    for (index_t v = d.front_points; v < d.point_count(); ++v) EXPECT_TRUE(used[v]) << "point " << v << " in no tet";
+}
+
+struct SizeReport {
+    double in_band = 0, min_q = 1, mean_q = 0, closest = 1e300, min_new_q = 1;
+};
+
+// first_new: the first point refinement added (recovery's Steiner points come before it).
+SizeReport size_report(const TetDomain& d, const ControlSpace& cs, double reject, index_t first_new) {
+    SizeReport r;
+    index_t ok = 0;
+    for (index_t t = 0; t < d.tets.size(); ++t) {
+        const index_t* v = d.tets.vertex(t);
+        std::array<Vec3, 4> p;
+        double c[3] = {0, 0, 0};
+        for (int i = 0; i < 4; ++i) {
+            p[i] = {d.point(v[i])[0], d.point(v[i])[1], d.point(v[i])[2]};
+            for (int k = 0; k < 3; ++k) c[k] += d.point(v[i])[k] / 4;
+        }
+        double mean = 0;
+        for (int e = 0; e < 6; ++e) {
+            const Vec3 a = p[kTetTopology.edge[e].a], b = p[kTetTopology.edge[e].b];
+            mean += std::hypot(a.x - b.x, a.y - b.y, a.z - b.z) / 6;
+        }
+        const double ratio = mean / cs.size(c);
+        if (ratio >= 0.6 && ratio <= 1.6) ++ok;
+        const double q = tet_collapse(p);
+        r.min_q = std::min(r.min_q, q);
+        if (std::any_of(v, v + 4, [&](index_t u) { return u >= d.front_points; })) r.min_new_q = std::min(r.min_new_q, q);
+        r.mean_q += q / d.tets.size();
+    }
+    r.in_band = double(ok) / d.tets.size();
+    // Every new point at least the rejection distance (at the smaller of the two sizes) away.
+    std::vector<double> x, y, z;
+    for (index_t v = 0; v < d.point_count(); ++v) x.push_back(d.point(v)[0]), y.push_back(d.point(v)[1]), z.push_back(d.point(v)[2]);
+    const PointIndex index(x, y, z);
+    std::vector<Neighbor> near;
+    for (index_t v = first_new; v < d.point_count(); ++v) {
+        const double hv = cs.size(d.point(v));
+        index.within({x[v], y[v], z[v]}, reject * hv, near);
+        for (const Neighbor& q : near) {
+            if (q.index == v) continue;
+            const double h = std::min(hv, cs.size(d.point(q.index)));
+            r.closest = std::min(r.closest, std::sqrt(q.distance_squared) / (reject * h));
+        }
+    }
+    return r;
+}
+
+void check_refinement(TetDomain d, const char* name) {
+    const std::vector<index_t> front = d.front;
+    const double v0 = volume(d);
+    const index_t first_new = d.point_count();
+    const ControlSpace cs(d);
+    RefineOptions o;
+    o.threads = 2;
+    o.partitions = 2;
+    o.min_points_per_part = 64;
+    const RefineStats s = refine_interior(d, cs, o);
+    ASSERT_GT(s.inserted, 0u);
+    expect_valid(d, front);
+    EXPECT_NEAR(volume(d), v0, 1e-9 * v0);
+    const SizeReport r = size_report(d, cs, o.reject_factor, first_new);
+    std::printf("[%s] rounds %u, inserted %llu (blocked %llu, shrunk %llu, conflicts %llu), tets %u, %.3f s; "
+                "mean edge/h in [0.6,1.6]: %.1f %%; collapse min %.3f (tets with a new point %.3f) mean %.3f; "
+                "closest pair / rejection distance %s\n",
+                name, s.rounds, (unsigned long long)s.inserted, (unsigned long long)s.blocked,
+                (unsigned long long)s.shrunk_cavities, (unsigned long long)s.kernel_conflicts, s.tets, s.seconds,
+                100 * r.in_band, r.min_q, r.min_new_q, r.mean_q,
+                r.closest > 1e299 ? "> 1" : std::to_string(r.closest).c_str());
+    EXPECT_GE(r.in_band, 0.9);
+    EXPECT_GE(r.closest, 1.0 - 1e-9);
+    EXPECT_GT(r.min_q, 0.0);
+}
+
+TEST(ControlSpace, FrontSizesAndGradation) {
+    const TetDomain d = box_domain();
+    ControlSpaceOptions o;
+    o.far_size = 0.5;
+    o.gradation = 1.5;
+    const ControlSpace cs(d, o);
+    for (index_t v = 0; v < d.front_points; ++v) {
+        EXPECT_GT(cs.node_size(v), 0.09);
+        EXPECT_LT(cs.node_size(v), 0.15);
+        EXPECT_LE(cs.size(d.point(v)), cs.node_size(v) + 1e-12);
+    }
+    const double centre[3] = {0.5, 0.5, 0.5};
+    // Half a unit from the nearest face: at most s + 0.5 * (g - 1), and never above S.
+    EXPECT_GT(cs.size(centre), 0.2);
+    EXPECT_LE(cs.size(centre), 0.15 + 0.5 * 0.5);
+    EXPECT_THROW(ControlSpace(d, ControlSpaceOptions{0, 0.5, 8}), Error);
+}
+
+TEST(Refine, BoxFilledToSize) { check_refinement(box_domain(), "box"); }
+
+TEST(Refine, LShapeFilledToSize) { check_refinement(l_domain(), "L"); }
+
+TEST(Refine, DeterministicAcrossRunsAndThreads) {
+    const auto run = [](unsigned threads) {
+        TetDomain d = l_domain();
+        const ControlSpace cs(d);
+        RefineOptions o;
+        o.threads = threads;
+        o.partitions = 2;
+        o.min_points_per_part = 32;
+        refine_interior(d, cs, o);
+        return d;
+    };
+    const TetDomain a = run(2), b = run(2), c = run(1);
+    for (const TetDomain* other : {&b, &c}) {
+        EXPECT_EQ(a.xyz, other->xyz);
+        ASSERT_EQ(a.tets.size(), other->tets.size());
+        EXPECT_TRUE(std::equal(a.tets.vertices().begin(), a.tets.vertices().end(), other->tets.vertices().begin()));
+        EXPECT_TRUE(std::equal(a.tets.neighbours().begin(), a.tets.neighbours().end(), other->tets.neighbours().begin()));
+    }
+}
+
+// A closed front: the grid-triangulated surface of the cube [lo,hi]^3, n cells per edge,
+// normals outward (or inward, for a hole). Points shared between faces are merged.
+void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& xyz, std::vector<index_t>& front) {
+    std::map<std::array<long, 3>, index_t> ids;
+    const auto id = [&](const double p[3]) {
+        const std::array<long, 3> key{std::lround(p[0] * 1e6), std::lround(p[1] * 1e6), std::lround(p[2] * 1e6)};
+        const auto [it, fresh] = ids.emplace(key, static_cast<index_t>(xyz.size() / 3));
+        if (fresh) xyz.insert(xyz.end(), p, p + 3);
+        return it->second;
+    };
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // (a, b, axis) right-handed
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j) {
+                    index_t q[4];
+                    const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
+                    for (int k = 0; k < 4; ++k) {
+                        double p[3];
+                        p[axis] = side ? hi : lo;
+                        p[a] = lo + (hi - lo) * (i + di[k]) / n;
+                        p[b] = lo + (hi - lo) * (j + dj[k]) / n;
+                        q[k] = id(p);
+                    }
+                    // Counter-clockwise in (a, b) points along +axis: outward on the high side.
+                    const bool flip = (side == 0) == outward;
+                    const index_t t[6] = {q[0], q[1], q[2], q[0], q[2], q[3]};
+                    for (int k = 0; k < 6; k += 3) {
+                        front.push_back(t[k]);
+                        front.push_back(flip ? t[k + 2] : t[k + 1]);
+                        front.push_back(flip ? t[k + 1] : t[k + 2]);
+                    }
+                }
+        }
+}
+
+// A real front through boundary recovery: a cube with a cubic hole, sizes 0.1 outside, 0.05 at
+// the hole.
+TEST(Refine, RecoveredCubeWithHole) {
+    std::vector<double> xyz;
+    std::vector<index_t> front;
+    cube_front(0.0, 1.0, 10, true, xyz, front);
+    cube_front(0.35, 0.65, 3, false, xyz, front);
+    RecoveryOptions ro;
+    ro.threads = 2;
+    ro.partitions = 2;
+    TetDomain d = recover_boundary(xyz, front, ro);
+    const double v0 = volume(d);
+    EXPECT_NEAR(v0, 1.0 - 0.3 * 0.3 * 0.3, 1e-9);
+    check_refinement(std::move(d), "cube with hole (recovered)");
+}
+
+// The kernel alone: a point just inside a front face keeps that face; points outside the
+// region or on the front are skipped, never inserted.
+TEST(ConstrainedKernel, FrontFacesSurvive) {
+    TetDomain d = box_domain();
+    const std::vector<index_t> front = d.front;
+    const double v0 = volume(d);
+    delaunay::Triangulation tri;
+    tri.adopt(d.xyz, std::move(d.tets));
+    const double pts[] = {0.53, 0.47, 1e-9,   // just inside the face z = 0
+                          0.5, 0.5, 0.5,      // the centre
+                          0.31, 0.29, -0.2,   // outside
+                          0.0, 0.55, 0.43};   // on the face x = 0
+    const index_t n = tri.point_count();
+    const index_t ids[] = {n, n + 1, n + 2, n + 3};
+    tri.add_points(pts, ids);
+    for (index_t i : ids) tri.set_walk_start(i, 0);
+    tri.insert(ids, 1, 1);
+    std::vector<index_t> blocked = tri.blocked();
+    std::sort(blocked.begin(), blocked.end());
+    EXPECT_EQ(blocked, (std::vector<index_t>{n + 2, n + 3}));
+    d.tets = tri.finish();
+    d.xyz.insert(d.xyz.end(), pts, pts + 6);
+    expect_valid(d, front);
+    EXPECT_NEAR(volume(d), v0, 1e-12);
+}
+
+}  // namespace

@@ -1,0 +1,94 @@
+#include "tools/cli/mesh_report.hpp"
+
+#include <fmt/format.h>
+
+#include "tools/cli/quality_table.hpp"
+
+namespace tubemesh::cli {
+
+namespace {
+
+bool whole(double x) { return x >= 0 && x < 1e15 && x == static_cast<double>(static_cast<long long>(x)); }
+
+std::string count_text(const std::pair<std::string, double>& c) {
+    if (whole(c.second)) return fmt::format("{} {}", static_cast<long long>(c.second), c.first);
+    return fmt::format("{} {:.4g}", c.first, c.second);
+}
+
+double phase_seconds(const geom::MeshRun& run, const char* name) {
+    for (const PhaseReport& p : run.result.phases)
+        if (p.name == name) return p.seconds;
+    return -1;
+}
+
+nlohmann::json pairs_json(const std::vector<std::pair<std::string, double>>& pairs) {
+    nlohmann::json o = nlohmann::json::object();
+    for (const auto& [name, value] : pairs) o[name] = value;
+    return o;
+}
+
+}  // namespace
+
+std::vector<std::string> phase_lines(const geom::MeshRun& run) {
+    std::vector<std::string> lines;
+    for (const PhaseReport& p : run.result.phases) {
+        std::string text;
+        for (const auto& c : p.counts) text += (text.empty() ? "" : ", ") + count_text(c);
+        std::string stats;
+        for (const auto& s : p.statistics) stats += (stats.empty() ? "" : ", ") + fmt::format("{} {:.4g}", s.first, s.second);
+        if (!stats.empty()) text += (text.empty() ? "" : "; ") + stats;
+        lines.push_back(fmt::format("{:<10} {:8.3f} s  {}", p.name, p.seconds, text));
+    }
+    return lines;
+}
+
+std::string run_table(const geom::MeshRun& run) {
+    const PipelineResult& r = run.result;
+    KindTimes times;
+    times.tet = phase_seconds(run, "tets");
+    times.pyramid = phase_seconds(run, "pyramids");
+    times.hex = phase_seconds(run, "sweep");
+    return format_run_table(r.quality, r.mesh.point_count(), times, r.seconds);
+}
+
+nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs) {
+    const PipelineResult& r = run.result;
+    const HybridMesh& m = r.mesh;
+    nlohmann::json phases = nlohmann::json::array();
+    for (const PhaseReport& p : r.phases)
+        phases.push_back({{"name", p.name},
+                          {"seconds", p.seconds},
+                          {"counts", pairs_json(p.counts)},
+                          {"statistics", pairs_json(p.statistics)}});
+    nlohmann::json violations = nlohmann::json::array();
+    for (const Violation& v : r.check.violations)
+        violations.push_back({{"kind", violation_name(v.kind)}, {"count", v.count}});
+    const index_t cells = m.cell_count();
+    return {{"source", run.source},
+            {"format", run.format},
+            {"stage", stage_name(r.reached)},
+            {"sizes", {{"S", run.size}, {"St", run.sweep_size}}},
+            {"tubes", run.tubes},
+            {"nodes", m.point_count()},
+            {"hexes", m.cell_count(CellKind::Hex)},
+            {"pyramids", m.cell_count(CellKind::Pyramid)},
+            {"tets", m.cell_count(CellKind::Tet)},
+            {"boundary_triangles", m.face_count(FaceKind::Tri)},
+            {"boundary_quads", m.face_count(FaceKind::Quad)},
+            {"regions", m.region_names},
+            {"surface_groups", m.surface_group_names},
+            {"phases", phases},
+            {"total_seconds", r.seconds},
+            {"elements_per_second", r.seconds > 0 ? cells / r.seconds : 0.0},
+            {"quality", quality_json(r.quality)},
+            {"check",
+             {{"interior_faces", r.check.interior_faces},
+              {"free_faces", r.check.boundary_faces},
+              {"volume", r.check.volume},
+              {"violations_expected_at_this_stage", violations}}},
+            {"warnings", r.warnings},
+            {"model", run.model_lines},
+            {"outputs", outputs}};
+}
+
+}  // namespace tubemesh::cli

@@ -14,12 +14,6 @@ using predicates::orient3d;
 
 namespace {
 
-std::array<index_t, 3> sorted3(index_t a, index_t b, index_t c) {
-    if (a > b) std::swap(a, b);
-    if (b > c) std::swap(b, c);
-    if (a > b) std::swap(a, b);
-    return {a, b, c};
-}
 
 std::uint64_t edge_key(index_t u, index_t v) {
     if (u > v) std::swap(u, v);

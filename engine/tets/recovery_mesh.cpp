@@ -13,13 +13,6 @@ using delaunay::kNoAdjacent;
 
 namespace {
 
-std::array<index_t, 3> sorted3(index_t a, index_t b, index_t c) {
-    if (a > b) std::swap(a, b);
-    if (b > c) std::swap(b, c);
-    if (a > b) std::swap(a, b);
-    return {a, b, c};
-}
-
 int local_of(const index_t* v, index_t x) {
     for (int i = 0; i < 4; ++i)
         if (v[i] == x) return i;

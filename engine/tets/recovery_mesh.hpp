@@ -11,12 +11,21 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "engine/core/types.hpp"
 #include "engine/delaunay/tet_store.hpp"
 
 namespace tubemesh::tets {
+
+// A triangle's point ids in increasing order: the key that matches a face from either side.
+inline std::array<index_t, 3> sorted3(index_t a, index_t b, index_t c) {
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    return {a, b, c};
+}
 
 using Tet = std::array<index_t, 4>;
 

@@ -45,8 +45,6 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
     for (const PhaseReport& p : phases) r.seconds += p.seconds;
     r.phases.insert(r.phases.begin(), phases.begin(), phases.end());
     r.warnings.insert(r.warnings.begin(), prepared.warnings.begin(), prepared.warnings.end());
-    if (prepared.geometry.tubes.empty() && kLastStage == Stage::Pyramids)
-        r.warnings.push_back("the tet step is not available yet: this mesh holds only the surface triangles");
 
     if (options.check) check_result(r, options.progress);
 

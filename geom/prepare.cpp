@@ -46,14 +46,11 @@ void refuse_contradictory_sizes(const SizePlan& plan, const SizingOptions& given
                                 source_text(plan.size_source)));
 }
 
-std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan, const SizingOptions& given) {
+std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan) {
     std::vector<std::string> w;
     if (tubes.tubes.empty())
         w.push_back("no tubular hole found in the solid: no hex rings or pyramids, the volume is meshed with "
                     "tetrahedra only");
-    if (given.size > 0 && plan.size < given.size && !plan.changes.empty())
-        w.push_back(fmt::format("the mesh size S = {:.6g} was lowered to {:.6g} = 1.3 St by rule {} ({})", given.size,
-                                plan.size, plan.changes.back().rule, plan.changes.back().reason));
     for (const std::string& x : plan.warnings) w.push_back(x);
     return w;
 }
@@ -97,7 +94,7 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
     sizes.statistics = {{"S", p.plan.size}};
     if (!p.tubes.tubes.empty()) sizes.statistics.push_back({"St", p.plan.sweep_size});
     p.phases.push_back(std::move(sizes));
-    p.warnings = plan_warnings(p.tubes, p.plan, options.sizing);
+    p.warnings = plan_warnings(p.tubes, p.plan);
 
     t0 = Clock::now();
     {

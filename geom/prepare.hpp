@@ -6,8 +6,8 @@
 // Sizes the user gave are honoured or refused, never silently replaced: prepare_model throws
 // when the paper's rules would have to cut a given St (the message names the rule, the
 // tubes or faces involved and the largest St allowed), and when St is not below S (whether
-// each came from the user or from a default). S given alone may still be lowered to 1.3 St
-// when the rules cut the default St; that change is in report_lines() and the warnings.
+// each came from the user or from a default). A given S is never changed; a default S is
+// recomputed from the final St (geom/sizing.hpp).
 //
 // No OpenCASCADE header here.
 #include <memory>

@@ -33,14 +33,13 @@ void check_user_size(double value, const char* name) {
         throw Error(std::string(name) + " must be a positive number, got " + fmt(value));
 }
 
-// Sets St (and S = 1.3 St, as every rule of the paper does) and records why.
+// Cuts St and records why. S stays (sizing.hpp says why we depart from the paper here).
 void change(SizePlan& plan, std::string rule, double new_sweep, std::string reason) {
     SizeChange c;
     c.rule = std::move(rule);
     c.old_sweep_size = plan.sweep_size;
     c.old_size = plan.size;
     plan.sweep_size = new_sweep;
-    plan.size = kSizeOverSweep * new_sweep;
     c.new_sweep_size = plan.sweep_size;
     c.new_size = plan.size;
     c.reason = std::move(reason);
@@ -139,6 +138,14 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
     plan.dcb = c.dcb;
     apply_rules(plan, c, e);
     apply_guards(plan, c, e);
+    if (options.size <= 0 && !plan.changes.empty()) {
+        // The default S was max(diagonal / 25, 1.3 St): recompute it with the final St.
+        const double diagonal = box_diagonal(model, tubes);
+        plan.size = std::max(diagonal / kDiagonalDivisor, kSizeOverSweep * plan.sweep_size);
+        plan.size_source =
+            plan.size == diagonal / kDiagonalDivisor ? "default: bounding-box diagonal / 25" : "default: 1.3 St";
+        plan.changes.back().new_size = plan.size;
+    }
     return plan;
 }
 

@@ -2,17 +2,24 @@
 // Mesh sizes (paper §2): S, the overall size, and St, the sweep size (thickness of the hex
 // ring around each tube and axial spacing of its layers), from the user or from defaults,
 // then cut down by the paper's three rules in the paper's order:
-//   1. St > 1.4 Dcb  ->  St = 1.4 Dcb, S = 1.3 St
-//   2. St > 0.6 Dc   ->  St = 0.6 Dc,  S = 1.3 St
-//   3. St > 0.8 Rc   ->  St = 0.8 Rc,  S = 1.3 St
+//   1. St > 1.4 Dcb  ->  St = 1.4 Dcb
+//   2. St > 0.6 Dc   ->  St = 0.6 Dc
+//   3. St > 0.8 Rc   ->  St = 0.8 Rc
 // with Dcb the smallest distance from a tube's wall to a boundary face other than its hosts
 // (and other tubes' walls), Dc the smallest distance between two tubes' walls, Rc the
 // smallest radius of curvature of a centre line.
 //
+// The paper also sets S = 1.3 St with every rule. We do not: its own examples contradict it
+// (Table 1's second example keeps tets of about S = 1.1 around holes whose bends cut St far
+// below 1.1 / 1.3), and tying S to a cut St multiplies the element count by orders of
+// magnitude (paper-ex2 at --size 1.1: S would fall to 0.18 and give 2.1 M tets instead of
+// about 10 k). S only follows St where it was derived from it: the default S below is
+// recomputed from the final St. Cutting St therefore never raises S above the user's value.
+//
 // The rules alone still let a ring collide: St = 1.4 Dcb is thicker than the gap it sits in.
-// So three guards follow, each cutting St (and S = 1.3 St, as the rules do) to 95% of its
-// limit when broken, with a ring of thickness St and a pyramid of height 0.98154 St on it
-// (the paper's ideal apex over a quad of side St):
+// So three guards follow, each cutting St to 95% of its limit when broken, with a ring of
+// thickness St and a pyramid of height 0.98154 St on it (the paper's ideal apex over a quad
+// of side St):
 //   boundary: St + 0.98154 St < Dcb       (ring and pyramid stay clear of non-host faces)
 //   rings:    2 St + 0.98154 St < Dc      (ring and pyramid stay clear of the other ring)
 //   bend:     r_max + St < Rc             (the ring does not fold on the inside of a bend)

@@ -46,11 +46,26 @@ TEST(GeomSizing, PipeNearAFaceTriggersRuleOne) {
     EXPECT_EQ(p.changes[0].rule.substr(0, 2), "1:") << changes(p);
     EXPECT_NEAR(p.dcb, 0.05, 1e-7);
     EXPECT_NEAR(p.changes[0].new_sweep_size, 0.07, 1e-7);
-    EXPECT_NEAR(p.changes[0].new_size, 1.3 * 0.07, 1e-7);
+    // The rules cut St only; the default S (here 1.3 St) is recomputed from the final St.
+    EXPECT_NEAR(p.changes[0].new_size, p.changes[0].old_size, 1e-12);
     // 0.07 + 0.98 x 0.07 still reaches past the face: the boundary guard follows.
     ASSERT_EQ(p.changes.size(), 2u) << changes(p);
     EXPECT_EQ(p.changes[1].rule, "guard: boundary");
     EXPECT_LT(p.sweep_size * (1 + 0.98154), p.dcb);
+    EXPECT_NEAR(p.size, std::max(std::sqrt(3.0) / 25, 1.3 * p.sweep_size), 1e-6);
+}
+
+TEST(GeomSizing, CuttingStKeepsTheUsersSize) {
+    // The same pipe near a face, with S given: St is cut, S stays the user's.
+    const geom::Model model = test::model_of(
+        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR));
+    geom::SizingOptions options;
+    options.sweep_size = 0.1;
+    options.size = 0.3;
+    const geom::SizePlan p = geom::plan_sizes(model, geom::find_tubes(model).tubes, options);
+    ASSERT_GE(p.changes.size(), 1u);
+    EXPECT_LT(p.sweep_size, 0.07);
+    EXPECT_EQ(p.size, 0.3);
 }
 
 TEST(GeomSizing, TwoClosePipesTriggerRuleTwo) {

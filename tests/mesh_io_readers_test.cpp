@@ -3,14 +3,13 @@
 // JSON; these tests compare it with the mesh.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <vector>
 
 #include "engine/io/mesh_io.hpp"
 #include "tests/mesh_io_samples.hpp"
+#include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"
 #include "tests/support/sample_meshes.hpp"
 
@@ -18,51 +17,13 @@ namespace tubemesh {
 namespace {
 
 using nlohmann::json;
+using testing::Counts;
+using testing::gmsh_counts;
+using testing::listed;
+using testing::meshio_counts;
+using testing::physical_groups;
+using testing::run_script;
 using testing::TempDir;
-using Counts = std::map<std::string, int>;
-
-// Runs tests/scripts/<script> with Debian's Python and parses its JSON output.
-json run_script(const std::string& script, std::vector<std::string> args) {
-    args.insert(args.begin(), std::string(TUBEMESH_TEST_SCRIPTS) + "/" + script);
-    std::string command = testing::shell_quote(TUBEMESH_TEST_PYTHON);
-    for (const std::string& a : args) {
-        command += ' ';
-        command += testing::shell_quote(a);
-    }
-    const testing::ProcessResult r = testing::run_command(command);
-    if (r.exit_code != 0) {
-        ADD_FAILURE() << script << " failed (exit " << r.exit_code << "):\n" << r.err;
-        return json::object();
-    }
-    return json::parse(r.out);
-}
-
-bool listed(const json& array, const std::string& name) {
-    return std::find(array.begin(), array.end(), json(name)) != array.end();
-}
-
-// Gmsh's element counts per type number, as tubemesh's mesh has them.
-std::map<std::string, int> gmsh_counts(const HybridMesh& m) {
-    std::map<std::string, int> c;
-    auto put = [&](const char* type, index_t n) {
-        if (n > 0) c[type] = static_cast<int>(n);
-    };
-    put("4", m.cell_count(CellKind::Tet));
-    put("7", m.cell_count(CellKind::Pyramid));
-    put("5", m.cell_count(CellKind::Hex));
-    put("2", m.face_count(FaceKind::Tri));
-    put("3", m.face_count(FaceKind::Quad));
-    return c;
-}
-
-// [dim, tag, name] per physical group, as Gmsh lists them (by dimension, then tag).
-json physical_groups(const HybridMesh& m) {
-    json groups = json::array();
-    for (std::size_t g = 0; g < m.surface_group_names.size(); ++g)
-        groups.push_back({2, g + 1, m.surface_group_names[g]});
-    for (std::size_t r = 0; r < m.region_names.size(); ++r) groups.push_back({3, r + 1, m.region_names[r]});
-    return groups;
-}
 
 // Gmsh lists only physical groups that hold elements.
 HybridMesh without_empty_groups(HybridMesh m) {
@@ -84,22 +45,15 @@ TEST_P(GmshReadsOurMsh, SameCountsAndPhysicalNames) {
         EXPECT_EQ(seen["elements"].get<Counts>(), gmsh_counts(*mesh));
         EXPECT_EQ(seen["nodes"], mesh->point_count());
         EXPECT_EQ(seen["physical"], physical_groups(*mesh)) << seen.dump();
+        // One entity per group, holding the group's elements.
+        json groups = json::object();
+        for (const auto& [key, count] : testing::group_sizes(*mesh)) groups[key] = {1, count};
+        EXPECT_EQ(seen["groups"], groups);
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, GmshReadsOurMsh, ::testing::Values(MshEncoding::Ascii, MshEncoding::Binary),
                          [](const auto& info) { return info.param == MshEncoding::Ascii ? "Ascii" : "Binary"; });
-
-std::map<std::string, int> meshio_counts(const HybridMesh& m) {
-    std::map<std::string, int> c;
-    auto put = [&](const char* type, index_t n) {
-        if (n > 0) c[type] = static_cast<int>(n);
-    };
-    put("tetra", m.cell_count(CellKind::Tet));
-    put("pyramid", m.cell_count(CellKind::Pyramid));
-    put("hexahedron", m.cell_count(CellKind::Hex));
-    return c;
-}
 
 TEST(MeshioReads, OurVtu) {
     TempDir dir;
@@ -107,13 +61,38 @@ TEST(MeshioReads, OurVtu) {
     write_vtu(mesh, dir / "mesh.vtu");
     const json seen = run_script("meshio_summary.py", {(dir / "mesh.vtu").string()});
     EXPECT_EQ(seen["points"], mesh.point_count());
-    EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh));
-    EXPECT_EQ(seen["cell_data"], json({"kind", "quality", "region"}));
-    std::map<std::string, int> regions;
+    EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh, true));
+    EXPECT_EQ(seen["cell_data"], json({"dim", "group", "kind", "quality"}));
+    // One numbering: regions, then surface groups; the empty ones are in the field data too.
+    EXPECT_EQ(seen["field_data"], testing::vtu_field_data(mesh)) << seen["field_data"].dump();
+    Counts groups;
     for (CellKind k : kAllCellKinds)
-        for (index_t r : mesh.block(k).region) ++regions[std::to_string(r)];
-    EXPECT_EQ(seen["region_counts"].get<Counts>(), regions);
+        for (index_t r : mesh.block(k).region) ++groups[std::to_string(r)];
+    for (FaceKind k : {FaceKind::Tri, FaceKind::Quad})
+        for (index_t g : mesh.block(k).group) ++groups[std::to_string(mesh.region_names.size() + g)];
+    EXPECT_EQ(seen["group_counts"].get<Counts>(), groups);
+    EXPECT_EQ(seen["quality_nan"], 0);  // every boundary face is a face of a cell
     EXPECT_GT(seen["quality_min"].get<double>(), 0.1);  // the grid's cells are all fair
+}
+
+// A face no cell has gets quality NaN; a name used twice gets "_2" in the field data; names
+// with XML specials survive.
+TEST(MeshioReads, OurVtuGroupTableEdgeCases) {
+    TempDir dir;
+    HybridMesh mesh = testing::conforming_patch();
+    mesh.surface_group_names[0] = "tets";         // also a region
+    mesh.surface_group_names[1] = "a&b <\"c\">";  // XML specials
+    const index_t loose = mesh.surface_group_id("loose");
+    const index_t nodes[3] = {0, 1, 12};  // two hex corners and the apex: no cell's face
+    mesh.add_face(FaceKind::Tri, nodes, loose);
+    write_vtu(mesh, dir / "mesh.vtu");
+    const json seen = run_script("meshio_summary.py", {(dir / "mesh.vtu").string()});
+    const json regions = static_cast<int>(mesh.region_names.size());
+    EXPECT_EQ(seen["field_data"]["tets"], json({2, 3})) << seen.dump();
+    EXPECT_EQ(seen["field_data"]["tets_2"], json({regions, 2}));
+    EXPECT_EQ(seen["field_data"]["a&b <\"c\">"], json({regions.get<int>() + 1, 2}));
+    EXPECT_EQ(seen["field_data"]["loose"], json({regions.get<int>() + 2, 2}));
+    EXPECT_EQ(seen["quality_nan"], 1);
 }
 
 TEST(MeshioReads, OurInp) {
@@ -122,7 +101,7 @@ TEST(MeshioReads, OurInp) {
         write_inp(mesh, dir / "mesh.inp");
         const json seen = run_script("meshio_summary.py", {(dir / "mesh.inp").string()});
         EXPECT_EQ(seen["points"], mesh.point_count());
-        EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh));
+        EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh, false));
         for (const std::string& region : mesh.region_names)
             if (region != "unused") {
                 EXPECT_TRUE(listed(seen["cell_sets"], region)) << region << seen.dump();

@@ -289,13 +289,23 @@ TEST(VtuWriter, HeaderCountsAndLegend) {
     write_vtu(testing::conforming_patch(), dir / "m.vtu");
     const std::string text = testing::read_text(dir / "m.vtu");
     EXPECT_TRUE(contains(text, "header_type=\"UInt64\"")) << text;
-    EXPECT_TRUE(contains(text, "<Piece NumberOfPoints=\"13\" NumberOfCells=\"12\">"));
-    EXPECT_TRUE(contains(text, "region 1: \"pyramids\""));
-    for (const char* name : {"connectivity", "offsets", "types", "kind", "region", "quality"})
+    // 12 cells, then the 10 boundary triangles and 5 boundary quads.
+    EXPECT_TRUE(contains(text, "<Piece NumberOfPoints=\"13\" NumberOfCells=\"27\">"));
+    EXPECT_TRUE(contains(text, "group 1: region \"pyramids\""));
+    EXPECT_TRUE(contains(text, "group 4: surface group \"upper_sides\""));
+    for (const char* name : {"connectivity", "offsets", "types", "dim", "kind", "group", "quality"})
         EXPECT_TRUE(contains(text, std::string("Name=\"") + name + "\"")) << name;
-    // One UInt8 per cell type: 8-byte header + 12 bytes = 20 bytes = 28 base64 characters.
-    // Tets (10) first, then the pyramid (14) and the hex (12).
-    EXPECT_TRUE(contains(text, "Name=\"types\" format=\"binary\">\n          DAAAAAAAAAAKCgoKCgoKCgoKDgw=\n"));
+    // One UInt8 per cell type: 8-byte header + 27 bytes = 35 bytes = 48 base64 characters.
+    // Tets (10) first, then the pyramid (14), the hex (12), triangles (5) and quads (9).
+    EXPECT_TRUE(contains(text, "Name=\"types\" format=\"binary\">\n          "
+                               "GwAAAAAAAAAKCgoKCgoKCgoKDgwFBQUFBQUFBQUFCQkJCQk=\n"));
+    // dim: 3 for the 12 cells, 2 for the 15 faces.
+    EXPECT_TRUE(contains(text, "Name=\"dim\" format=\"binary\">\n          "
+                               "GwAAAAAAAAADAwMDAwMDAwMDAwMCAgICAgICAgICAgICAgI=\n"));
+    // Field data before the piece: upper_sides is group 3 + 1 = 4 of dimension 2.
+    EXPECT_LT(text.find("<FieldData>"), text.find("<Piece "));
+    EXPECT_TRUE(contains(text, "<DataArray type=\"Int32\" Name=\"upper_sides\" NumberOfTuples=\"2\" "
+                               "format=\"binary\">\n          CAAAAAAAAAAEAAAAAgAAAA==\n"));
 }
 
 // ---------------------------------------------------------------- Abaqus

@@ -18,6 +18,7 @@ const char* stage_name(Stage s) {
         case Stage::Sweep: return "sweep";
         case Stage::Surface: return "surface";
         case Stage::Pyramids: return "pyramids";
+        case Stage::Tets: return "tets";
     }
     return "?";
 }
@@ -143,6 +144,35 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
     out.phases.push_back(std::move(r));
 }
 
+void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
+    const auto t0 = Clock::now();
+    PhaseProgress progress(opt.progress, "tets", 3);  // recovery, refinement, optimisation
+    tets::TetStepOptions to = opt.tets;
+    if (to.far_size <= 0) to.far_size = in.geometry.size;
+    to.threads = opt.threads > 0 ? static_cast<unsigned>(opt.threads) : 0;
+    to.partitions = opt.same_for_any_thread_count ? kFixedPartitions : 0;
+    to.part_done = [&progress] { progress.advance(); };
+    out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), to);
+    const tets::TetStepStats& s = out.tet_stats;
+    PhaseReport r{"tets", seconds_since(t0), {}};
+    r.counts = {{"tets", double(s.tets)},
+                {"front triangles", double(s.front_triangles)},
+                {"new nodes", double(s.new_points)},
+                {"missing front edges", double(s.recovery.missing_edges)},
+                {"missing front faces", double(s.recovery.missing_faces)},
+                {"steiner points kept", double(s.recovery.steiner_kept)},
+                {"refinement rounds", double(s.refine.rounds)},
+                {"flips", double(s.optimise.flips23 + s.optimise.flips32 + s.optimise.flips44 + s.optimise.edge_removals)},
+                {"smoothing moves", double(s.optimise.moves)}};
+    r.statistics = {{"recovery s", s.recovery.seconds_total},
+                    {"refinement s", s.refine.seconds},
+                    {"optimisation s", s.optimise.seconds_total},
+                    {"min collapse before optimisation", s.optimise.min_collapse_before},
+                    {"mean collapse before optimisation", s.optimise.mean_collapse_before}};
+    progress.finish();
+    out.phases.push_back(std::move(r));
+}
+
 void run_phases(const PipelineInput& input, const MeshOptions& options, Stage until, PipelineResult& out) {
     run_sweep(input, options, out);
     out.reached = Stage::Sweep;
@@ -152,6 +182,9 @@ void run_phases(const PipelineInput& input, const MeshOptions& options, Stage un
     if (until == Stage::Surface) return;
     run_pyramids(options, out);
     out.reached = Stage::Pyramids;
+    if (until == Stage::Pyramids) return;
+    run_tets(input, options, out);
+    out.reached = Stage::Tets;
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// The meshing pipeline (DESIGN.md "Data flow"): sweep -> surface -> pyramids (-> tets, later),
+// The meshing pipeline (DESIGN.md "Data flow"): sweep -> surface -> pyramids -> tets,
 // on plain data only — geom/prepare.hpp turns a CAD model into a PipelineInput.
 //
 //  * Sweep: a hex ring around every tube (engine/sweep), region "hex_ring"; the rings' wall
@@ -9,6 +9,10 @@
 //    faces and a size field S with point sources on those polygons. Group "face_<id>".
 //  * Pyramids: one pyramid on every outer quad of the rings (engine/pyramids), region
 //    "pyramids"; the surface triangles bound the region, the end quads are obstacles.
+//  * Tets: the region bounded by the tet front (the pyramids' free triangles and the surface
+//    triangles no pyramid covers) filled with tetrahedra (engine/tets/tet_step.hpp), region
+//    "tets": boundary recovery, interior points graded from the front's sizes to S,
+//    optimisation. A solid without tubes goes straight from the surface to the tets.
 //
 // What the mesh holds when the pipeline stops early (`until`):
 //  * after Sweep: the hex rings with all their boundary faces (wall and end quads). The outer
@@ -25,8 +29,10 @@
 //    stored as boundary faces — they are interior in the final mesh — but returned in
 //    PipelineResult::tet_front. Surface triangles that a pyramid face now covers stay as
 //    boundary faces (they are the pyramid's free face, on the solid's boundary).
+//  * after Tets: the full hybrid mesh; every boundary face is a free face of one cell, and
+//    `tubemesh check` passes.
 // Writers: .msh and .vtu write every partial mesh; .inp needs every boundary face on a cell
-// and so refuses the surface and pyramid stages until tets exist.
+// and so refuses the surface and pyramid stages.
 //
 // Every phase is deterministic for a given thread count (each module guarantees it), so the
 // pipeline is too.
@@ -47,27 +53,32 @@
 #include "engine/surface/face_mesher.hpp"
 #include "engine/surface/size_field.hpp"
 #include "engine/sweep/sweep.hpp"
+#include "engine/tets/tet_step.hpp"
 
 namespace tubemesh {
 
-enum class Stage { Sweep, Surface, Pyramids };  // Tets comes later
+enum class Stage { Sweep, Surface, Pyramids, Tets };
 
 // Every stage in pipeline order, and the last one: run_pipeline's and the CLI's default.
 // (A new stage goes into the enum, stage_name and this list; nothing else keys on the count.)
-inline constexpr Stage kStages[] = {Stage::Sweep, Stage::Surface, Stage::Pyramids};
+inline constexpr Stage kStages[] = {Stage::Sweep, Stage::Surface, Stage::Pyramids, Stage::Tets};
 inline constexpr Stage kLastStage = kStages[std::size(kStages) - 1];
 
-const char* stage_name(Stage s);  // "sweep", "surface", "pyramids"
+const char* stage_name(Stage s);  // "sweep", "surface", "pyramids", "tets"
 // The inverse of stage_name; nullopt for a name that is no stage.
 std::optional<Stage> stage_from_name(std::string_view name);
+
+// Delaunay parts of the tet step when MeshOptions::same_for_any_thread_count is set: two,
+// this machine's core count, so the fixed split costs nothing here.
+inline constexpr unsigned kFixedPartitions = 2;
 
 // Every knob of a run, each with its default. The first three are the user's sizes: geom
 // plans with them (geom/prepare.hpp, geom/mesh_file.hpp) and hands the planned S and St to the
 // engine in DiscreteGeometry; run_pipeline itself reads the fields from `sweep` on.
 struct MeshOptions {
     // S, the overall mesh size (edges and surface triangles far from the tubes). 0 (default):
-    // the bounding-box diagonal / 25, at least 1.3 St (geom/sizing.hpp). The paper's rules may
-    // lower it to 1.3 St when they cut St; such changes are listed in the report.
+    // the bounding-box diagonal / 25, at least 1.3 St of the final St (geom/sizing.hpp). A
+    // given S is never changed.
     double size = 0;
     // St, the hex ring's thickness and axial spacing. 0 (default): the smallest tube
     // diameter, then cut by the paper's rules. A value given here is honoured or refused: if
@@ -92,13 +103,17 @@ struct MeshOptions {
     // 0.98154 h, search radius 1.5 h, 45 degrees, distance 0.65 h, 5 try nodes, 8 drawback
     // rounds, quality floor 0.45).
     PyramidOptions pyramids;
+    // Tet step options (engine/tets/tet_step.hpp and the headers it names: gradation 1.4,
+    // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5). far_size = 0 (the
+    // default) takes S; threads and partitions come from the two fields below.
+    tets::TetStepOptions tets;
     // oneTBB worker threads for the whole run; 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
     // Determinism. The same input, options and thread count always give the same mesh, byte
     // for byte: there is no faster timing-dependent mode. The sweep, surface and pyramid
-    // phases also give the same mesh for every thread count. false (default): a phase may
-    // split its work by thread count (the tet step's Delaunay parts); true: it uses a fixed
-    // split, so the mesh is the same on any machine, at some cost in speed.
+    // phases also give the same mesh for every thread count. false (default): the tet step's
+    // Delaunay passes split their work into one part per thread; true: into a fixed
+    // kFixedPartitions parts, so the mesh is the same for any thread count and machine.
     bool same_for_any_thread_count = false;
     // Run the validity and conformity check (engine/pipeline/stage_check.hpp) on the result
     // before handing it out: geom::mesh_file / mesh_model throw when it fails. Default true.
@@ -140,6 +155,8 @@ struct PipelineResult {
     std::vector<std::string> warnings;  // what the user should know about this mesh, one line each
     CheckReport check;  // filled by check_result (stage_check.hpp); empty before
     SweepResult sweep;
+    // After Tets: recovery, refinement and optimisation statistics.
+    tets::TetStepStats tet_stats;
     // After Pyramids: the closed boundary of the tet region, 3 node ids per triangle, normal
     // out of the region — the pyramids' free triangles, then the surface triangles no pyramid
     // covers. Empty before.

@@ -62,7 +62,7 @@ TEST(CliMesh, MissingInputIsExitTwoWithoutOutput) {
 
 TEST(CliMesh, UnknownStageIsAUsageError) {
     TempDir dir;
-    const auto r = run_command(cli() + " mesh -o " + q(dir / "y.msh") + " --until tets");
+    const auto r = run_command(cli() + " mesh -o " + q(dir / "y.msh") + " --until volume");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_FALSE(std::filesystem::exists(dir / "y.msh"));
 }

@@ -1,5 +1,6 @@
 """Opens a mesh file with Gmsh's own reader and prints what Gmsh sees, as JSON:
-element counts per Gmsh type, node count, physical groups [dim, tag, name].
+element counts per Gmsh type, node count, physical groups [dim, tag, name], and per physical
+group "dim:name" -> [entities, elements].
 
 usage: gmsh_summary.py FILE.msh
 """
@@ -7,6 +8,15 @@ import json
 import sys
 
 import gmsh
+
+
+def group_sizes(dim, tag):
+    entities = gmsh.model.getEntitiesForPhysicalGroup(dim, tag)
+    elements = 0
+    for e in entities:
+        _, tags, _ = gmsh.model.mesh.getElements(dim, e)
+        elements += sum(len(t) for t in tags)
+    return [len(entities), elements]
 
 
 def main():
@@ -18,9 +28,10 @@ def main():
         counts = {str(t): len(tg) for t, tg in zip(types, tags)}
         nodes = len(gmsh.model.mesh.getNodes()[0])
         physical = [[d, t, gmsh.model.getPhysicalName(d, t)] for d, t in gmsh.model.getPhysicalGroups()]
+        groups = {f"{d}:{name}": group_sizes(d, t) for d, t, name in physical}
     finally:
         gmsh.finalize()
-    print(json.dumps({"elements": counts, "nodes": nodes, "physical": physical}))
+    print(json.dumps({"elements": counts, "nodes": nodes, "physical": physical, "groups": groups}))
 
 
 if __name__ == "__main__":

@@ -1,11 +1,13 @@
 """Reads a mesh file with meshio and prints what meshio sees, as JSON: point count, cell
-counts per meshio cell type, names of cell data, cell sets and point sets, and how many
-cells carry each "region" value (when the file has that cell data).
+counts per meshio cell type, names of cell data, cell sets and point sets with their sizes,
+and for tubemesh's .vtu: how many cells carry each "group" value, the field data
+(group name -> [id, dim]) and the quality range.
 
 usage: meshio_summary.py FILE.vtu|FILE.inp
 """
 import collections
 import json
+import math
 import sys
 
 import meshio
@@ -26,15 +28,22 @@ def main():
         "cells": dict(cells),
         "cell_data": sorted(mesh.cell_data),
         "cell_sets": sorted(mesh.cell_sets),
+        "cell_set_sizes": {k: sum(len(ids) for ids in v) for k, v in mesh.cell_sets.items()},
         "point_sets": sorted(mesh.point_sets),
+        "point_set_sizes": {k: len(v) for k, v in mesh.point_sets.items()},
+        "field_data": {k: [int(x) for x in v] for k, v in mesh.field_data.items()},
     }
-    if "region" in mesh.cell_data:
-        regions = collections.Counter()
-        for values in mesh.cell_data["region"]:
-            regions.update(str(int(v)) for v in values)
-        out["region_counts"] = dict(regions)
+    if "group" in mesh.cell_data:
+        groups = collections.Counter()
+        for values in mesh.cell_data["group"]:
+            groups.update(str(int(v)) for v in values)
+        out["group_counts"] = dict(groups)
     if "quality" in mesh.cell_data:
-        out["quality_min"] = min(float(v.min()) for v in mesh.cell_data["quality"] if len(v))
+        values = [float(v) for block in mesh.cell_data["quality"] for v in block]
+        finite = [v for v in values if not math.isnan(v)]
+        out["quality_nan"] = len(values) - len(finite)
+        if finite:
+            out["quality_min"] = min(finite)
     print(json.dumps(out))
 
 

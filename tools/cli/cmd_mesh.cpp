@@ -1,5 +1,6 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
-// [--threads T] [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
+// [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--same-for-any-threads]
+// [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
 // (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
 // progress, print the phases and Table 1, and write the mesh to every OUT (format by
 // extension: .msh, .vtu, .inp) and the report as JSON.
@@ -38,6 +39,11 @@ struct MeshArgs {
     double sweep_size = 0;
     int circumferential = 0;
     int layers = 2;
+    MeshOptions defaults;  // the documented defaults of the options below
+    double axial_aspect = defaults.sweep.axial_aspect;
+    double pyramid_height = defaults.pyramids.height_factor;
+    double gradation = defaults.tets.gradation;
+    bool same_for_any_threads = false;
     int threads = 0;
     int solid = 0;
     std::string report;
@@ -121,6 +127,10 @@ MeshOptions mesh_options(const MeshArgs& a, ProgressLine& progress) {
     o.sweep_size = a.sweep_size;
     o.circumferential = a.circumferential;
     o.sweep.radial_layers = a.layers;
+    o.sweep.axial_aspect = a.axial_aspect;
+    o.pyramids.height_factor = a.pyramid_height;
+    o.tets.gradation = a.gradation;
+    o.same_for_any_thread_count = a.same_for_any_threads;
     o.threads = a.threads;
     o.progress = progress.callback();
     return o;
@@ -148,7 +158,21 @@ Command add_mesh_command(CLI::App& app) {
         ->check(CLI::Range(3, 4096));
     cmd->add_option("--layers", args->layers, "Hex layers across the ring, L (default 2, graded 1.5 towards the wall)")
         ->check(CLI::Range(1, 64));
+    cmd->add_option("--axial-aspect", args->axial_aspect,
+                    fmt::format("Axial step of the hex rings over St (default {})", args->axial_aspect))
+        ->check(CLI::Range(0.25, 16.0));
+    cmd->add_option("--pyramid-height", args->pyramid_height,
+                    fmt::format("Pyramid apex height over the quad's mean edge (default {}, the paper's)",
+                                args->pyramid_height))
+        ->check(CLI::Range(0.2, 3.0));
+    cmd->add_option("--gradation", args->gradation,
+                    fmt::format("Largest growth of the tet size from one element to the next (default {})",
+                                args->gradation))
+        ->check(CLI::Range(1.0, 4.0));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
+    cmd->add_flag("--same-for-any-threads", args->same_for_any_threads,
+                  "Split the parallel tet step into a fixed number of parts, so the mesh is the same for any "
+                  "thread count (default: the same for the same thread count)");
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
     cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
         ->check(CLI::Range(1, 1 << 30));

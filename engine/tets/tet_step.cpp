@@ -1,0 +1,90 @@
+#include "engine/tets/tet_step.hpp"
+
+#include <tbb/global_control.h>
+
+#include <chrono>
+#include <vector>
+
+namespace tubemesh::tets {
+
+TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region,
+                        const TetStepOptions& options) {
+    const auto t0 = std::chrono::steady_clock::now();
+    TetStepStats stats;
+    if (front.empty() || front.size() % 3 != 0) throw Error("tet step: the front is empty or not made of triangles");
+    const unsigned threads =
+        options.threads ? options.threads
+                        : static_cast<unsigned>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    const unsigned parts = options.partitions ? options.partitions : threads;
+    stats.threads = threads;
+    stats.partitions = parts;
+    stats.front_triangles = static_cast<index_t>(front.size() / 3);
+
+    // Compact the front's nodes to domain ids 0..k-1 in order of first use (deterministic).
+    const index_t n = mesh.point_count();
+    std::vector<index_t> to_domain(n, kNoIndex);
+    std::vector<index_t> to_mesh;
+    std::vector<double> xyz;
+    std::vector<index_t> local;
+    local.reserve(front.size());
+    for (index_t v : front) {
+        if (v >= n) throw Error("tet step: a front node id is out of range");
+        if (to_domain[v] == kNoIndex) {
+            to_domain[v] = static_cast<index_t>(to_mesh.size());
+            to_mesh.push_back(v);
+            xyz.insert(xyz.end(), {mesh.x[v], mesh.y[v], mesh.z[v]});
+        }
+        local.push_back(to_domain[v]);
+    }
+
+    RecoveryOptions ro = options.recovery;
+    ro.threads = threads;
+    ro.partitions = parts;
+    TetDomain domain = recover_boundary(xyz, local, ro, &stats.recovery);
+    if (options.part_done) options.part_done();
+
+    ControlSpaceOptions co;
+    co.far_size = options.far_size;
+    co.gradation = options.gradation;
+    const ControlSpace space(domain, co);
+
+    RefineOptions fo = options.refine;
+    fo.threads = threads;
+    fo.partitions = parts;
+    stats.refine = refine_interior(domain, space, fo);
+    if (options.part_done) options.part_done();
+
+    OptimiseOptions oo = options.optimise;
+    oo.threads = threads;
+    stats.optimise = optimise(domain, oo);
+    if (options.part_done) options.part_done();
+
+    // Append: points after the front's become new mesh points, in domain order.
+    const index_t domain_points = domain.point_count();
+    to_mesh.resize(domain_points, kNoIndex);
+    // Recovery keeps the ids of Steiner points it removed again: only points of tets are added.
+    std::vector<char> used(domain_points, 0);
+    for (index_t t = 0; t < domain.tets.size(); ++t) {
+        const index_t* v = domain.tets.vertex(t);
+        for (int k = 0; k < 4; ++k) used[v[k]] = 1;
+    }
+    for (index_t p = domain.front_points; p < domain_points; ++p)
+        if (used[p]) {
+            const double* q = domain.point(p);
+            to_mesh[p] = mesh.add_point(q[0], q[1], q[2]);
+            ++stats.new_points;
+        }
+    CellBlock& tets = mesh.block(CellKind::Tet);
+    tets.nodes.reserve(tets.nodes.size() + 4 * std::size_t{domain.tets.size()});
+    tets.region.reserve(tets.region.size() + domain.tets.size());
+    for (index_t t = 0; t < domain.tets.size(); ++t) {
+        const index_t* v = domain.tets.vertex(t);
+        for (int k = 0; k < 4; ++k) tets.nodes.push_back(to_mesh[v[k]]);
+        tets.region.push_back(region);
+    }
+    stats.tets = domain.tets.size();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return stats;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,62 @@
+#pragma once
+// The whole tet step (paper §5) on the pipeline's mesh: the closed front (PipelineResult::
+// tet_front, mesh node ids) -> boundary recovery -> control space -> interior points ->
+// optimisation -> new points and tets appended to the HybridMesh.
+//
+// The front's nodes keep their mesh ids; Steiner points of the recovery and interior points
+// become new mesh points, appended in the domain's order, so the numbering is deterministic.
+// The mesh's existing cells and boundary faces are not touched: the front triangles become
+// faces shared by a tet and a pyramid / hex-free side (pyramid layer) or boundary faces on
+// the solid's surface (their group stays).
+#include <cstdint>
+#include <functional>
+#include <span>
+
+#include "engine/core/types.hpp"
+#include "engine/mesh/hybrid_mesh.hpp"
+#include "engine/tets/boundary_recovery.hpp"
+#include "engine/tets/control_space.hpp"
+#include "engine/tets/optimise.hpp"
+#include "engine/tets/refine.hpp"
+
+namespace tubemesh::tets {
+
+struct TetStepOptions {
+    // Far size S of the control space (the pipeline passes DiscreteGeometry::size). 0: the
+    // largest local size of the front.
+    double far_size = 0;
+    // Largest growth of the target size from one tet to the next (ControlSpaceOptions); 1.4.
+    double gradation = 1.4;
+    // Worker threads of every part; 0 = the current oneTBB limit (global_control), so the
+    // pipeline's --threads applies.
+    unsigned threads = 0;
+    // Spatial parts of the parallel Delaunay passes (recovery's kernel run and refinement);
+    // 0 = one per thread. The mesh depends on the input and this count only: a fixed count
+    // gives the same mesh for any thread count.
+    unsigned partitions = 0;
+    RecoveryOptions recovery;  // threads/partitions are overridden by the two fields above
+    RefineOptions refine;      // likewise
+    OptimiseOptions optimise;  // likewise for threads
+    // Called after each of the three parts (recovery, refinement, optimisation), for progress
+    // reports; may be empty. The mesh does not depend on it.
+    std::function<void()> part_done;
+};
+
+struct TetStepStats {
+    RecoveryStats recovery;
+    RefineStats refine;
+    OptimiseStats optimise;
+    index_t front_triangles = 0;
+    index_t new_points = 0;  // Steiner + interior points appended to the mesh
+    index_t tets = 0;
+    unsigned threads = 0, partitions = 0;
+    double seconds = 0;
+};
+
+// Appends the tets (region `region`) and their new points to `mesh`. `front`: 3 mesh node ids
+// per triangle, normal out of the region. Throws tubemesh::Error (mesh unchanged) when the
+// front is not a closed, oriented, non-self-intersecting surface or recovery fails.
+TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region,
+                        const TetStepOptions& options = {});
+
+}  // namespace tubemesh::tets

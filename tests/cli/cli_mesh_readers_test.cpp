@@ -1,0 +1,142 @@
+// Issue 9, deliverable 6, end to end: `tubemesh mesh` writes the full hybrid mesh (hex ring,
+// pyramids, tets) of a small block as .msh, .vtu and .inp; `tubemesh check` passes on it; and
+// outside readers open each file and find the same nodes, elements and groups - one surface
+// group per tube wall (pipe_k) and per other B-rep face (face_<id>), one volume group per
+// region - Gmsh for .msh, meshio for .vtu and .inp (meshio skips Abaqus *SURFACE; the script
+// group_members.py reads those itself).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "engine/io/mesh_io.hpp"
+#include "tests/mesh_io_samples.hpp"
+#include "tests/support/outside_readers.hpp"
+#include "tests/support/process.hpp"
+
+namespace tubemesh {
+namespace {
+
+using nlohmann::json;
+using testing::Counts;
+using testing::run_command;
+using testing::run_script;
+using testing::shell_quote;
+using testing::TempDir;
+
+std::string cli() { return shell_quote(TUBEMESH_CLI); }
+std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
+
+// The straight-pipe block (4 x 3 x 2, one pipe of diameter 0.1) at a coarse size: a full
+// hybrid mesh of a few thousand elements, meshed once for every test below.
+class FullMeshFiles : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        dir_ = new TempDir;
+        const auto made = run_command(cli() + " make-block --preset straight-pipe -o " + q(path("x.step")));
+        ASSERT_EQ(made.exit_code, 0) << made.out << made.err;
+        const auto inspected = run_command(cli() + " inspect --json " + q(path("x.step")));
+        ASSERT_EQ(inspected.exit_code, 0) << inspected.err;
+        model_ = json::parse(inspected.out);
+        const auto meshed = run_command(cli() + " mesh " + q(path("x.step")) + " --size 0.6 --threads 2 --quiet -o " +
+                                        q(path("m.msh")) + " -o " + q(path("m.vtu")) + " -o " + q(path("m.inp")));
+        ASSERT_EQ(meshed.exit_code, 0) << meshed.out << meshed.err;
+        mesh_ = read_msh(path("m.msh"));
+    }
+    static void TearDownTestSuite() {
+        delete dir_;
+        dir_ = nullptr;
+    }
+    static std::filesystem::path path(const std::string& name) { return *dir_ / name; }
+
+    static inline TempDir* dir_ = nullptr;
+    static inline json model_;        // `tubemesh inspect --json` of the block
+    static inline HybridMesh mesh_;  // the .msh as tubemesh reads it
+};
+
+TEST_F(FullMeshFiles, OurCheckPassesAndEveryGroupIsThere) {
+    ASSERT_GT(mesh_.point_count(), 0u);
+    const auto checked = run_command(cli() + " check " + q(path("m.msh")));
+    EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
+
+    const HybridMesh& m = mesh_;
+    EXPECT_GT(m.cell_count(CellKind::Hex), 0u);
+    EXPECT_GT(m.cell_count(CellKind::Pyramid), 0u);
+    EXPECT_GT(m.cell_count(CellKind::Tet), 0u);
+    EXPECT_EQ(std::set<std::string>(m.region_names.begin(), m.region_names.end()),
+              (std::set<std::string>{"hex_ring", "pyramids", "tets"}));
+    // One group per tube wall and one per other B-rep face, each holding faces.
+    std::set<std::string> expected;
+    for (std::size_t t = 1; t <= model_["tubes"].size(); ++t) expected.insert("pipe_" + std::to_string(t));
+    for (const json& f : model_["faces"])
+        if (f["role"].get<std::string>().rfind("wall of", 0) != 0) expected.insert("face_" + f["id"].dump());
+    EXPECT_EQ(std::set<std::string>(m.surface_group_names.begin(), m.surface_group_names.end()), expected);
+    EXPECT_EQ(m.surface_group_names.size(), expected.size());  // no name twice
+    const Counts sizes = testing::group_sizes(m);
+    for (const std::string& g : m.surface_group_names) EXPECT_GT(sizes.count("2:" + g), 0u) << g;
+    for (const std::string& r : m.region_names) EXPECT_GT(sizes.count("3:" + r), 0u) << r;
+}
+
+TEST_F(FullMeshFiles, GmshReopensTheMsh) {
+    const json seen = run_script("gmsh_summary.py", {path("m.msh").string()});
+    EXPECT_EQ(seen["nodes"], mesh_.point_count());
+    EXPECT_EQ(seen["elements"].get<Counts>(), testing::gmsh_counts(mesh_));
+    EXPECT_EQ(seen["physical"], testing::physical_groups(mesh_)) << seen["physical"].dump();
+    json groups = json::object();
+    for (const auto& [key, count] : testing::group_sizes(mesh_)) groups[key] = {1, count};
+    EXPECT_EQ(seen["groups"], groups);
+}
+
+TEST_F(FullMeshFiles, MeshioReadsTheVtuWithItsGroups) {
+    const json seen = run_script("meshio_summary.py", {path("m.vtu").string()});
+    EXPECT_EQ(seen["points"], mesh_.point_count());
+    EXPECT_EQ(seen["cells"].get<Counts>(), testing::meshio_counts(mesh_, true));
+    EXPECT_EQ(seen["field_data"], testing::vtu_field_data(mesh_));
+    EXPECT_EQ(seen["quality_nan"], 0);  // every boundary face lies on a cell
+    EXPECT_GT(seen["quality_min"].get<double>(), 0);
+}
+
+TEST_F(FullMeshFiles, MeshioReadsTheInpWithItsSets) {
+    const json seen = run_script("meshio_summary.py", {path("m.inp").string()});
+    EXPECT_EQ(seen["points"], mesh_.point_count());
+    EXPECT_EQ(seen["cells"].get<Counts>(), testing::meshio_counts(mesh_, false));
+    const Counts sizes = testing::group_sizes(mesh_);
+    for (const std::string& r : mesh_.region_names)
+        EXPECT_EQ(seen["cell_set_sizes"][r], sizes.at("3:" + r)) << r;
+    for (const std::string& g : mesh_.surface_group_names) EXPECT_TRUE(testing::listed(seen["point_sets"], g)) << g;
+}
+
+// Element for element: every group holds the same cells or faces in all three files.
+TEST_F(FullMeshFiles, TheThreeFormatsHoldTheSameGroups) {
+    const json seen =
+        run_script("group_members.py", {path("m.msh").string(), path("m.vtu").string(), path("m.inp").string()});
+    ASSERT_TRUE(seen.contains("msh")) << seen.dump();
+    Counts msh_sizes;
+    for (const auto& [key, v] : seen["msh"].items()) msh_sizes[key] = v[0].get<int>();
+    EXPECT_EQ(msh_sizes, testing::group_sizes(mesh_));
+    EXPECT_EQ(seen["vtu"], seen["msh"]);
+    for (const auto& [key, v] : seen["msh"].items()) EXPECT_EQ(seen["inp"][key], v) << key;
+    for (const auto& [key, v] : seen["inp"].items()) {  // besides: one element set per kind
+        if (!seen["msh"].contains(key)) {
+            EXPECT_EQ(key.rfind("3:KIND_C3D", 0), 0u) << key;
+        }
+    }
+    EXPECT_EQ(seen["points"]["vtu"], 0.0);  // binary: the same doubles
+    EXPECT_EQ(seen["points"]["inp"], 0.0);  // text in the shortest form that reads back exactly
+    EXPECT_EQ(seen["nset_mismatch"], json::array());
+}
+
+// The .msh holds everything the other writers use, in the same order: writing what tubemesh
+// reads back from it gives the CLI's .vtu and .inp byte for byte.
+TEST_F(FullMeshFiles, MshHoldsTheWholeMesh) {
+    TempDir dir;
+    write_vtu(mesh_, dir / "again.vtu");
+    write_inp(mesh_, dir / "again.inp");
+    EXPECT_TRUE(testing::read_text(dir / "again.vtu") == testing::read_text(path("m.vtu")));
+    EXPECT_TRUE(testing::read_text(dir / "again.inp") == testing::read_text(path("m.inp")));
+}
+
+}  // namespace
+}  // namespace tubemesh

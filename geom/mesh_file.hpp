@@ -6,7 +6,7 @@
 //   options.size = 0.6;
 //   const auto run = tubemesh::geom::mesh_file("dam.step", options);
 //   tubemesh::write_mesh(run.result.mesh, "dam.msh");      // engine/io/mesh_io.hpp
-//   // run.result.phases: import, tubes, sizes, discretize, sweep, surface, pyramids, check
+//   // run.result.phases: import, tubes, sizes, discretize, sweep, surface, pyramids, tets, check
 //   // run.result.quality: per cell kind count, min, mean, max; run.result.seconds: total
 //
 // Steps: import (ImportOptions: one solid, healed) -> prepare (tube recognition, S and St,

@@ -12,8 +12,10 @@ namespace tubemesh::geom {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The paper's ideal pyramid apex height over a quad of mean edge h is 0.98154 h.
-constexpr double kPyramidHeight = 0.98154;
+// Room the pyramid layer needs in front of a ring, over St: about 1.2 h (measured on pipes
+// side by side and over a face with the pyramid step's default criteria), h the outer quads' mean
+// edge, which reaches 1.8 St.
+constexpr double kPyramidRoom = 2.2;
 // A guard cuts St to this fraction of its limit, so the apex does not just touch.
 constexpr double kGuardMargin = 0.95;
 constexpr double kDiagonalDivisor = 25;
@@ -78,15 +80,15 @@ void apply_rules(SizePlan& plan, const Clearances& c, const Extremes& e) {
 }
 
 void apply_guards(SizePlan& plan, const Clearances& c, const Extremes& e) {
-    const double reach = (1 + kPyramidHeight) * plan.sweep_size;
+    const double reach = (1 + kPyramidRoom) * plan.sweep_size;
     if (reach >= c.dcb)
-        change(plan, "guard: boundary", kGuardMargin * c.dcb / (1 + kPyramidHeight),
-               "a ring of thickness St plus a pyramid of height 0.98 St reaches " + fmt(reach) + " from " +
+        change(plan, "guard: boundary", kGuardMargin * c.dcb / (1 + kPyramidRoom),
+               "a ring of thickness St plus the 2.2 St its pyramids need reaches " + fmt(reach) + " from " +
                    tube_name(c.dcb_tube) + ", but face " + std::to_string(c.dcb_face) + " is " + fmt(c.dcb) + " away");
-    const double gap = (2 + kPyramidHeight) * plan.sweep_size;
+    const double gap = (2 + kPyramidRoom) * plan.sweep_size;
     if (gap >= c.dc)
-        change(plan, "guard: rings", kGuardMargin * c.dc / (2 + kPyramidHeight),
-               "two rings of thickness St and a pyramid of height 0.98 St need " + fmt(gap) + " between " +
+        change(plan, "guard: rings", kGuardMargin * c.dc / (2 + kPyramidRoom),
+               "two rings of thickness St and the 2.2 St their pyramids need take " + fmt(gap) + " between " +
                    tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + ", which are " + fmt(c.dc) + " apart");
     if (std::isfinite(e.rc)) {
         const double room = e.rc - e.r_max;

@@ -18,10 +18,11 @@
 //
 // The rules alone still let a ring collide: St = 1.4 Dcb is thicker than the gap it sits in.
 // So three guards follow, each cutting St to 95% of its limit when broken, with a ring of
-// thickness St and a pyramid of height 0.98154 St on it (the paper's ideal apex over a quad
-// of side St):
-//   boundary: St + 0.98154 St < Dcb       (ring and pyramid stay clear of non-host faces)
-//   rings:    2 St + 0.98154 St < Dc      (ring and pyramid stay clear of the other ring)
+// thickness St and the room its pyramid layer needs in front of it, 2.2 St: the paper's
+// criteria (try nodes down to Rate 0.9^5) need about 1.2 h there, h the outer quads' mean
+// edge, which reaches 1.8 St (their axial edges reach 1.9 St):
+//   boundary: St + 2.2 St < Dcb       (ring and pyramids stay clear of non-host faces)
+//   rings:    2 St + 2.2 St < Dc      (both rings and a pyramid layer fit between them)
 //   bend:     r_max + St < Rc             (the ring does not fold on the inside of a bend)
 //
 // Defaults: St = the smallest tube diameter (2 r_min): with n ring nodes chosen so the

@@ -50,6 +50,17 @@ TEST(SweepErrors, RingsTurningOppositeWays) {
     EXPECT_NE(failure(scene, tubes).find("opposite ways"), std::string::npos);
 }
 
+TEST(SweepErrors, ARingFarFromWhereTheWallMeetsTheHost) {
+    // A tenth of the radius out: no loop's tolerance explains that, the ring is not the tube's.
+    const Scene scene = straight_scene(0.02, 0.04, 1.0);
+    auto tubes = scene.tubes;
+    for (Vec3& p : tubes[0].ring2) p = {1.1 * p.x, 1.1 * p.y, p.z};
+    const std::string what = failure(scene, tubes);
+    EXPECT_NE(what.find("tube 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("ring2 node 0"), std::string::npos) << what;
+    EXPECT_NE(what.find("where the wall meets host face"), std::string::npos) << what;
+}
+
 TEST(SweepErrors, TheFirstFailingTubeIsNamed) {
     Scene scene = straight_scene(0.02, 0.04, 1.0);
     auto tubes = scene.tubes;

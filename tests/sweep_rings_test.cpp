@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "engine/check/mesh_check.hpp"
 #include "engine/sweep/sweep.hpp"
@@ -61,6 +62,35 @@ TEST(SweepRings, CrankshaftOilHoleMeetsTheJournalAtAnAngle) {
 
 TEST(SweepRings, ObliquePlaneAndConcaveBore) {
     print("oblique 40/30 deg", expect_acceptance(oblique_scene(0.02, 0.04, 40 * kPi / 180, 30 * kPi / 180, 0.5)));
+}
+
+// Every ring node moved 1e-4 r off the wall, radially and along the axis, alternately in and
+// out.
+void push_rings_off_the_wall(Scene& scene) {
+    for (std::size_t t = 0; t < scene.tubes.size(); ++t) {
+        TubeData& tube = scene.tubes[t];
+        const double r = scene.specs[t].radius;
+        for (auto [ring, station] : {std::pair{&tube.ring1, tube.stations.front()}, {&tube.ring2, tube.stations.back()}})
+            for (std::size_t k = 0; k < ring->size(); ++k) {
+                const V axis = eig(station.tangent), d = eig((*ring)[k]) - eig(station.centre);
+                const V radial = (d - d.dot(axis) * axis).normalized();
+                const double sign = k % 2 == 0 ? 1.0 : -1.0;
+                (*ring)[k] = vec(eig((*ring)[k]) + sign * 1e-4 * r * (radial + 0.5 * axis));
+            }
+    }
+}
+
+// geom's end loops are B-rep edges whose 3D curve is only within the edge's tolerance of the
+// wall/host intersection (3.6e-5 r off the wall measured on the builders' blocks). The sweep
+// moves the ring nodes onto the intersection: the end stations' wall nodes then lie on the wall
+// and the host within the same 1e-7 r as every other node.
+TEST(SweepRings, EndRingsOffTheWallAreMovedOntoWallAndHost) {
+    Scene oblique = oblique_scene(0.02, 0.04, 40 * kPi / 180, 30 * kPi / 180, 0.5);
+    push_rings_off_the_wall(oblique);
+    print("oblique, rings off the wall", expect_acceptance(oblique));
+    Scene oil_hole = oil_hole_scene(6, 12, 147.5, kPi / 6, false);
+    push_rings_off_the_wall(oil_hole);
+    print("oil hole, rings off the wall", expect_acceptance(oil_hole));
 }
 
 TEST(SweepRings, LeftHandedRingsGiveValidHexesToo) {

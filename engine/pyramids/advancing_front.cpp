@@ -103,12 +103,17 @@ std::vector<index_t> AdvancingFront::draw_back(const std::vector<index_t>& rejec
 void AdvancingFront::fail(const std::vector<index_t>& still, int round) const {
     const index_t first = still.front();
     const Front& f = world_.fronts[first];
+    // Where all of them are: a ring too close to its neighbour fails along its whole length,
+    // and the first quad alone would point at one end of it.
+    Box extent = Box::of(f.centroid);
+    for (index_t i : still) extent.add(world_.fronts[i].centroid);
     throw Error("pyramids: " + std::to_string(still.size()) + " front quad(s) found no valid pyramid after " +
-                std::to_string(round) + " drawback round(s); the first is quad " + std::to_string(first) + " near " +
-                where(f.centroid) + " with edge length " + std::to_string(f.h) +
-                ", whose last try node was refused as " + verdict_name(choice_[first].refusal) +
-                ". A ring there is too close to another ring or to a face for its quad size: "
-                "refine the ring's quads or move the pipe");
+                std::to_string(round) + " drawback round(s), their centres between " + where(extent.lo) + " and " +
+                where(extent.hi) + "; the first is quad " + std::to_string(first) + " near " + where(f.centroid) +
+                " with edge length " + std::to_string(f.h) + ", whose last try node was refused as " +
+                verdict_name(choice_[first].refusal) +
+                ". A ring there is too close to another ring or to a face for its quad size (the criteria need "
+                "about 1.2 edge lengths of room in front of a quad): lower the sweep size St or move the pipe");
 }
 
 void AdvancingFront::note_batch(index_t size) {

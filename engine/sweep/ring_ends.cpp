@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/core/types.hpp"
 #include "engine/sweep/frames.hpp"
@@ -43,7 +45,58 @@ HostHit hit_host(const SurfaceMap& host, const V3& origin, const V3& t, double d
     return {to_eigen(pr.point), pr.uv, depth};
 }
 
+// A node closer than this to both surfaces, over the radius, is on the curve: far below
+// the 1e-7 r the rings are held to, above the rounding of coordinates of a large model.
+constexpr double kSnapTolerance = 1e-11;
+// Newton converges quadratically from a start this close: a few steps. The cap only stops a
+// loop that rounding keeps from the tolerance; the node is then as close as it gets.
+constexpr int kMaxSnapSteps = 10;
+// geom's loop lies within its edge tolerance of both surfaces; a node this far off (over the
+// radius) is on some other loop, or the surfaces are not the tube's.
+constexpr double kMaxSnapMove = 0.05;
+// 1 - cos² of the angle between the two surfaces below which they are taken as tangent.
+constexpr double kMinCrossing = 1e-8;
+
+V3 snap_node(const V3& start, const WallProjection& wall, WallCursor& cursor, const SurfaceMap& host,
+             std::optional<Uv>& hint, double radius, const std::string& name) {
+    V3 x = start;
+    for (int step = 0;; ++step) {
+        const WallFoot w = wall.project(x, cursor);
+        const Projection h = host.project(to_vec3(x), hint);
+        if (!h.ok) throw Error(name + " has no foot point on host face " + std::to_string(host.face()));
+        hint = h.uv;
+        if ((w.distance <= kSnapTolerance * radius && h.distance <= kSnapTolerance * radius) || step == kMaxSnapSteps)
+            break;
+        const V3 nw = wall.normal(cursor);
+        const V3 nh = to_eigen(host.normal(h.uv));
+        const double c = nw.dot(nh), crossing = 1 - c * c;
+        if (!(crossing > kMinCrossing))
+            throw Error(name + ": the wall and host face " + std::to_string(host.face()) + " meet tangentially there");
+        // x - a·nw - b·nh on both tangent planes: a + c·b = dw, c·a + b = dh.
+        const double dw = nw.dot(x - w.point), dh = nh.dot(x - to_eigen(h.point));
+        x -= ((dw - c * dh) / crossing) * nw + ((dh - c * dw) / crossing) * nh;
+    }
+    if (!((x - start).norm() <= kMaxSnapMove * radius))
+        throw Error(name + " lies " + std::to_string((x - start).norm() / radius) +
+                    " radii from where the wall meets host face " + std::to_string(host.face()));
+    return x;
+}
+
 }  // namespace
+
+std::vector<Vec3> snap_to_wall_and_host(std::span<const Vec3> ring, const WallProjection& wall,
+                                        const SurfaceMap& host, double radius, const char* which) {
+    std::vector<Vec3> out;
+    out.reserve(ring.size());
+    // Each node starts from its predecessor's foot points: neighbours on a loop are close.
+    WallCursor cursor;
+    std::optional<Uv> hint;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+        const std::string name = std::string(which) + " node " + std::to_string(k);
+        out.push_back(to_vec3(snap_node(to_eigen(ring[k]), wall, cursor, host, hint, radius, name)));
+    }
+    return out;
+}
 
 EndSection ring_section(std::span<const Vec3> ring, const Station& station) {
     EndSection e;

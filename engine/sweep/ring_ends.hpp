@@ -1,12 +1,13 @@
 #pragma once
-// The cross-sections at a tube's two ends: the ring nodes as geom placed them, and the outer
-// nodes on the host face.
+// The cross-sections at a tube's two ends: the ring nodes geom placed, moved exactly onto wall
+// and host, and the outer nodes on the host face.
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
 #include "engine/sweep/centre_line.hpp"
+#include "engine/sweep/wall_projection.hpp"
 
 namespace tubemesh::sweep {
 
@@ -19,6 +20,17 @@ struct EndSection {
     std::vector<double> angle;   // per k: angle of ring node k about the tangent from the reference
     std::vector<double> radius;  // per k: distance of ring node k from the axis
 };
+
+// The ring nodes moved onto the curve where the wall meets the host, each to the nearest point
+// of that curve. geom samples the end loop's B-rep edge, whose 3D curve is only an
+// approximation of that intersection (within the edge's tolerance: up to 3.6e-5 r measured on
+// the builders' blocks), so a node can lie on the host but off the wall. Newton steps on both
+// surfaces at once: each moves the node to the nearest point of the line where the two
+// tangent planes at its foot points meet, which converges quadratically. Throws
+// tubemesh::Error (naming `which` and the node) when a node is farther than radius / 20 from
+// that curve or the two surfaces meet tangentially there.
+std::vector<Vec3> snap_to_wall_and_host(std::span<const Vec3> ring, const WallProjection& wall,
+                                        const SurfaceMap& host, double radius, const char* which);
 
 // Angles, radii and depths of the ring nodes around `station` (node j = 0 of the section).
 EndSection ring_section(std::span<const Vec3> ring, const Station& station);

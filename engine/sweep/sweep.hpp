@@ -3,8 +3,10 @@
 // first host face, swept along the centre line to the second host face.
 //
 // Per tube and per station, a cross-section of (L+1)·n nodes:
-//  * node (j = 0, k) lies on the tube's wall. At the end stations it is exactly ring1[k] /
-//    ring2[k]; in between it is centre + radius·dir_k projected onto the nearest wall face.
+//  * node (j = 0, k) lies on the tube's wall. At the end stations it is ring1[k] / ring2[k]
+//    moved to the nearest point where the wall meets the host (geom's loop curve is only
+//    within its tolerance of both); in between it is centre + radius·dir_k projected onto the
+//    nearest wall face.
 //  * nodes j = 1..L lie St·(g^j − 1)/(g^L − 1) further out along dir_k (graded layers, the
 //    thinnest at the wall); at the end stations they are moved along the tangent onto the host
 //    face (the line through the node parallel to the axis meets the host there), so the

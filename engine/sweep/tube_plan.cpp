@@ -92,14 +92,16 @@ TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& sur
     p.radius /= static_cast<double>(tube.stations.size());
     if (!(p.radius > 0) || !std::isfinite(p.radius)) throw Error("its radius is not positive");
     p.wall = WallProjection(std::move(walls), p.radius);
+    const std::vector<Vec3> ring1 = snap_to_wall_and_host(tube.ring1, p.wall, *p.hosts[0], p.radius, "ring1");
+    const std::vector<Vec3> ring2 = snap_to_wall_and_host(tube.ring2, p.wall, *p.hosts[1], p.radius, "ring2");
     p.sweep_size = tube_sweep_size(index, options, p.radius);
     p.offsets = radial_offsets(p.sweep_size, p.layers, options.grading);
     p.step = axial_step(p.radius, p.offsets, p.n, options.axial_aspect, options.max_condition);
-    p.line = resample_centre_line(tube.stations, p.step, to_eigen(tube.ring1.front()));
+    p.line = resample_centre_line(tube.stations, p.step, to_eigen(ring1.front()));
 
     const Station& first = p.line.stations.front();
     const Station& last = p.line.stations.back();
-    p.ends = {ring_section(tube.ring1, first), ring_section(tube.ring2, last)};
+    p.ends = {ring_section(ring1, first), ring_section(ring2, last)};
     p.turn = ring_turn(p.ends[0], "ring1");
     if (ring_turn(p.ends[1], "ring2") != p.turn)
         throw Error("its end rings turn opposite ways about the centre line; they must turn the same way");

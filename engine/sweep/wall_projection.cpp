@@ -103,4 +103,14 @@ WallFoot WallProjection::project(const V3& p, WallCursor& cursor) const {
     return {to_eigen(best_pr->point), best_pr->distance};
 }
 
+V3 WallProjection::normal(const WallCursor& cursor) const {
+    if (cursor.face < 0 || static_cast<std::size_t>(cursor.face) >= faces_.size())
+        throw Error("wall normal asked for before any foot point was found");
+    const SurfaceMap& s = *faces_[static_cast<std::size_t>(cursor.face)];
+    const V3 n = to_eigen(s.normal(cursor.uv));
+    if (!(n.squaredNorm() > 0.5))
+        throw Error("the wall of face " + std::to_string(s.face()) + " has no normal at a foot point");
+    return n;
+}
+
 }  // namespace tubemesh::sweep

@@ -35,6 +35,10 @@ public:
     // Throws tubemesh::Error when no face gives a foot point within half the radius.
     WallFoot project(const V3& p, WallCursor& cursor) const;
 
+    // Unit normal of the wall where `cursor` (set by project) points: the face's
+    // SurfaceMap::normal there. Throws tubemesh::Error at a singular point of the face.
+    V3 normal(const WallCursor& cursor) const;
+
 private:
     struct Box {
         V3 lo, hi;

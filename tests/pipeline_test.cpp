@@ -114,6 +114,32 @@ TEST(Pipeline, SameMeshForOneAndTwoThreads) {
     EXPECT_EQ(a.tet_front, b.tet_front);
 }
 
+// The full mesh: the tet step splits its Delaunay passes by thread count unless asked for a
+// fixed split; either way a rerun with the same options gives the same mesh.
+TEST(Pipeline, FullMeshIsTheSameForAnyThreadCountWhenAsked) {
+    const Prepared p = prepare("straight-pipe");
+    MeshOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    one.same_for_any_thread_count = two.same_for_any_thread_count = true;
+    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), one);
+    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), two);
+    EXPECT_EQ(a.reached, Stage::Tets);
+    EXPECT_GT(a.mesh.cell_count(CellKind::Tet), 0u);
+    EXPECT_TRUE(a.mesh == b.mesh);
+    EXPECT_EQ(a.tet_stats.partitions, kFixedPartitions);
+}
+
+TEST(Pipeline, FullMeshIsTheSameOnARerun) {
+    const Prepared p = prepare("straight-pipe");
+    MeshOptions two;
+    two.threads = 2;
+    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), two);
+    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), two);
+    EXPECT_TRUE(a.mesh == b.mesh);
+    EXPECT_TRUE(check_mesh(a.mesh).ok()) << describe(check_mesh(a.mesh));
+}
+
 TEST(Pipeline, NegativeThreadCountIsAnError) {
     const Prepared p = prepare("straight-pipe");
     MeshOptions o;

@@ -2,7 +2,8 @@
 // Discretisation of the B-rep for the engine (paper §3.2): each tube's two end loops with the
 // same node count and node 0 of both on one generator line of the wall, its centre line by
 // arc length with tangents and reference directions, and every other B-rep edge by arc length
-// at the overall size S, once per edge however many faces share it.
+// at the overall size S (finer on a curved edge, whose segments turn by at most 0.065 rad),
+// once per edge however many faces share it.
 //
 // No OpenCASCADE header here: the output is engine/geometry/tube_data.hpp's plain data.
 #include <vector>

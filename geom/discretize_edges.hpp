@@ -1,6 +1,7 @@
 #pragma once
 // B-rep edges cut by arc length (GCPnts_UniformAbscissa) into segments of at most a given
-// size, skipping the edges a tube owns.
+// size, and on a curved edge into enough segments that none turns by more than 0.065 rad,
+// skipping the edges a tube owns.
 #include <set>
 #include <vector>
 

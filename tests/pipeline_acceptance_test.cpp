@@ -9,8 +9,7 @@
 //  * test_pipeline_acceptance_heavy (TUBEMESH_ACCEPTANCE_HEAVY, label heavy): seeds 11-50.
 //  * test_pipeline_acceptance_gaps (TUBEMESH_ACCEPTANCE_GAPS, labels heavy and known_gap): the
 //    bars that still fail on some blocks, one test per bar and block, so each can be
-//    relabelled on its own once fixed: wall nodes within 1e-7 r on B-spline walls, triangle
-//    angles, flat-face areas, neighbour sizes within 1.5.
+//    relabelled on its own once fixed: pipes too close for the pyramid layer.
 // One ctest test per block and bar, so `ctest -j` spreads them.
 #include <gtest/gtest.h>
 
@@ -28,7 +27,7 @@ namespace tubemesh::acceptance {
 namespace {
 
 // The paper's three examples and the serpentine lift: where issue 6 sets the pyramid bar.
-bool pyramid_quality_preset(const std::string& name) {
+[[maybe_unused]] bool pyramid_quality_preset(const std::string& name) {
     return name == "paper-ex1" || name == "paper-ex2" || name == "paper-ex3" || name == "serpentine-lift";
 }
 
@@ -49,18 +48,18 @@ const CaseFigures& figures(const std::string& name, const geom::BlockSpec& spec)
     return it->second;
 }
 
-const CaseFigures& preset_figures(const std::string& name) { return figures(name, geom::preset_spec(name)); }
-const CaseFigures& seed_figures(int seed) {
+[[maybe_unused]] const CaseFigures& preset_figures(const std::string& name) { return figures(name, geom::preset_spec(name)); }
+[[maybe_unused]] const CaseFigures& seed_figures(int seed) {
     return figures("seed " + std::to_string(seed), geom::random_block_spec(static_cast<std::uint64_t>(seed)));
 }
 
-std::vector<std::string> preset_names() {
+[[maybe_unused]] std::vector<std::string> preset_names() {
     std::vector<std::string> names;
     for (const geom::PresetInfo& p : geom::preset_list()) names.push_back(p.name);
     return names;
 }
 
-std::vector<int> seeds(int first, int last) {
+[[maybe_unused]] std::vector<int> seeds(int first, int last) {
     std::vector<int> s;
     for (int i = first; i <= last; ++i) s.push_back(i);
     return s;
@@ -71,7 +70,7 @@ std::vector<int> seeds(int first, int last) {
 // ideal apexes and the other ring's layer or the face, so fronts there are rejected by the
 // normal criteria and served by existing nodes, relaxed criteria or try nodes. The layer must
 // still close without self-intersection.
-const CaseFigures& close_pipes_figures(double gap, double height) {
+[[maybe_unused]] const CaseFigures& close_pipes_figures(double gap, double height) {
     geom::BlockSpec s;
     s.name = "close-pipes";
     s.length_unit = "metre";
@@ -89,12 +88,22 @@ const CaseFigures& close_pipes_figures(double gap, double height) {
 // What the default suite runs; closer pipes (0.35 apart at 0.25) fail: see the gaps suite.
 constexpr double kCloseGap = 0.6, kCloseHeight = 0.35;
 
-std::string preset_test_name(const ::testing::TestParamInfo<std::string>& info) { return param_name(info.param); }
-std::string seed_test_name(const ::testing::TestParamInfo<int>& info) { return "seed" + std::to_string(info.param); }
+[[maybe_unused]] std::string preset_test_name(const ::testing::TestParamInfo<std::string>& info) { return param_name(info.param); }
+[[maybe_unused]] std::string seed_test_name(const ::testing::TestParamInfo<int>& info) { return "seed" + std::to_string(info.param); }
 
 void expect_accepted(const CaseFigures& f) {
     expect_rings_accepted(f);
+    // Moved from the gaps suite once the sweep put the end loops' nodes on the wall too: held
+    // on every preset and seeds 1-50 (largest 4.3e-12 r, was 3.6e-5 r).
+    expect_wall_nodes_accepted(f);
     expect_surface_accepted(f);
+    // Moved from the gaps suite once B-rep edges followed the size field, curved edges turned
+    // by at most 0.065 rad per segment and the grading sweep took smaller steps: held on every
+    // preset and seeds 1-50 (smallest angle 30.0 degrees, 97.8 % >= 40, was 17.1 and 94.0 %;
+    // flat faces 7.0e-4, was 3.1e-3; neighbour ratio 1.498, was 2.19).
+    expect_triangle_angles_accepted(f);
+    expect_flat_area_accepted(f);
+    expect_neighbor_ratio_accepted(f);
     expect_pyramid_layer_accepted(f);
 }
 
@@ -131,20 +140,12 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(PresetAcceptance);
 
 #else  // TUBEMESH_ACCEPTANCE_GAPS
 
-TEST_P(PresetAcceptance, WallNodesWithin1e7R) { expect_wall_nodes_accepted(preset_figures(GetParam())); }
-TEST_P(PresetAcceptance, TriangleAngles) { expect_triangle_angles_accepted(preset_figures(GetParam())); }
-TEST_P(PresetAcceptance, FlatFaceAreas) { expect_flat_area_accepted(preset_figures(GetParam())); }
-TEST_P(PresetAcceptance, NeighbourSizesWithin1_5) { expect_neighbor_ratio_accepted(preset_figures(GetParam())); }
-TEST_P(SeedAcceptance, WallNodesWithin1e7R) { expect_wall_nodes_accepted(seed_figures(GetParam())); }
-TEST_P(SeedAcceptance, TriangleAngles) { expect_triangle_angles_accepted(seed_figures(GetParam())); }
-TEST_P(SeedAcceptance, FlatFaceAreas) { expect_flat_area_accepted(seed_figures(GetParam())); }
-TEST_P(SeedAcceptance, NeighbourSizesWithin1_5) { expect_neighbor_ratio_accepted(seed_figures(GetParam())); }
-
-INSTANTIATE_TEST_SUITE_P(All, PresetAcceptance, ::testing::ValuesIn(preset_names()), preset_test_name);
-INSTANTIATE_TEST_SUITE_P(Random, SeedAcceptance, ::testing::ValuesIn(seeds(1, 50)), seed_test_name);
-
-// Pipes 0.35 apart, 0.25 over the bottom face, passed by the sizing guards: the pyramid step
-// throws (40 fronts near the x = 0 host face find no pyramid after 8 drawbacks).
+// Pipes 0.35 apart, 0.25 over the bottom face, passed by the sizing guards with St 0.080: the
+// pyramid step throws. Not near one end: quads by which the rings' 8-gons face each other fail
+// at all 20 stations, 40 in all. The 8-gons' facing corners are 0.091 apart, 0.73 h (h =
+// 0.125, the outer quads' mean edge); the paper's criteria (try nodes down to Rate 0.9^5)
+// need about 1.2 h, and even 8 try nodes do not fit there. With St 0.06 from the user the
+// layer closes. What the sizing guards should ask instead is in the issue notes.
 TEST(CloseTubes, VeryClosePipesGetAClosedPyramidLayer) {
     const CaseFigures& f = close_pipes_figures(0.35, 0.25);
     expect_accepted(f);

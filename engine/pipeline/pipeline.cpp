@@ -59,19 +59,6 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     if (!(g.size > 0)) throw Error("the overall mesh size S must be positive to mesh the surfaces");
     HybridMesh& mesh = out.mesh;
 
-    // Size field: S everywhere, finer near the rings' outer polygons.
-    std::vector<SizeSource> sources;
-    for (const TubeRing& ring : out.sweep.rings)
-        for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, sources);
-    SizeFieldOptions sf;
-    sf.max_size = g.size;
-    sf.growth = opt.size_growth;
-    const SizeField size(sf, std::move(sources));
-
-    const index_t points_before = mesh.point_count();
-    const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(g.edges, mesh);
-    const index_t edge_points = mesh.point_count() - points_before;
-
     std::vector<index_t> tube_loop_edges;
     std::unordered_set<index_t> walls;
     for (const TubeData& t : g.tubes) {
@@ -79,6 +66,33 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
         tube_loop_edges.insert(tube_loop_edges.end(), t.loop2_edges.begin(), t.loop2_edges.end());
         walls.insert(t.wall_faces.begin(), t.wall_faces.end());
     }
+
+    // Size field: S everywhere, finer near the rings' outer polygons. geom cut the B-rep edges
+    // at S (finer where they curve); where the rings ask for less they are cut again, on the
+    // first face (in id order) that uses them. Then the edges' own short segments (curved or
+    // short edges) become sources too, so the faces grade from them.
+    std::vector<SizeSource> ring_sources;
+    for (const TubeRing& ring : out.sweep.rings)
+        for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, ring_sources);
+    SizeFieldOptions sf;
+    sf.max_size = g.size;
+    sf.growth = opt.size_growth;
+    std::unordered_map<index_t, surface::EdgeOnFace> edge_faces;
+    for (const PipelineFace& f : in.faces)
+        if (!(f.tube_wall || walls.count(f.id)))
+            if (const SurfaceMap* map = in.surfaces(f.id)) surface::add_edge_faces(*map, edge_faces);
+    std::vector<EdgePolyline> edges;
+    std::vector<SizeSource> sources = ring_sources;
+    {
+        const SizeField rings(sf, std::move(ring_sources));
+        edges = surface::follow_size_field(g.edges, edge_faces, rings);
+        surface::add_short_edge_sources(edges, rings, sources);
+    }
+    const SizeField size(sf, std::move(sources));
+
+    const index_t points_before = mesh.point_count();
+    const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(edges, mesh);
+    const index_t edge_points = mesh.point_count() - points_before;
 
     index_t face_total = 0;
     for (const PipelineFace& f : in.faces) face_total += !(f.tube_wall || walls.count(f.id));
@@ -94,7 +108,7 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
                 if (end.host == f.id) holes.push_back({end.outer_nodes, end.outer_uv});
         surface::SurfaceFace face;
         face.surface = map;
-        face.boundary = surface::face_boundary(*map, g.edges, edge_nodes, tube_loop_edges, holes, mesh, g.size);
+        face.boundary = surface::face_boundary(*map, edges, edge_nodes, tube_loop_edges, holes, mesh, g.size);
         face.group = mesh.surface_group_id("face_" + std::to_string(f.id));
         faces.push_back(std::move(face));
     }

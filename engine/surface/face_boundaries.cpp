@@ -1,8 +1,11 @@
 #include "engine/surface/face_boundaries.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <unordered_set>
+
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh::surface {
 
@@ -33,6 +36,83 @@ EdgeNodes add_edge_nodes(std::span<const EdgePolyline> edges, HybridMesh& mesh) 
 
 namespace {
 
+// A segment up to this factor times h(x) is left alone: the face mesher accepts triangles with
+// a circumradius up to 1.3 times the ideal one, so such a segment is no worse than they are.
+constexpr double kLongSegment = 1.1;
+// Edge nodes whose segments are shorter than this factor times h(x) become size sources.
+constexpr double kShortSegment = 0.8;
+// The integral of ds / t(s) is taken in steps of at most this fraction of t: h changes by at
+// most g (0.25) times a step, so t is nearly constant over one.
+constexpr double kStepFraction = 0.25;
+
+// A point of the integration along a polyline: position = segment index + fraction along it.
+struct Station {
+    double position;
+    double integral;  // of ds / t(s) from the polyline's start
+};
+
+EdgePolyline follow_one(const EdgePolyline& e, const EdgeOnFace* on_face, const SizeField& size,
+                        std::vector<Station>& stations) {
+    const std::size_t m = e.points.size() - 1;
+    stations.clear();
+    stations.push_back({0, 0});
+    bool too_long = false;
+    double integral = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const Vec3 a = e.points[i], d = e.points[i + 1] - a;
+        const double len = norm(d);
+        if (!(len > 0)) {
+            stations.push_back({double(i + 1), integral});
+            continue;
+        }
+        // Trapezoids on 1 / t along the chord (close to the curve: its sagitta is small).
+        double s = 0;
+        double h = size.at(a);
+        too_long = too_long || len > kLongSegment * h;
+        double inv = 1 / std::min(h, len);
+        while (s < len) {
+            const double ds = std::min(kStepFraction * std::min(h, len), len - s);
+            const double s1 = s + ds < len ? s + ds : len;
+            const Vec3 x = s1 < len ? a + (s1 / len) * d : e.points[i + 1];
+            h = size.at(x);
+            too_long = too_long || len > kLongSegment * h;
+            const double inv1 = 1 / std::min(h, len);
+            integral += 0.5 * (inv + inv1) * (s1 - s);
+            inv = inv1;
+            s = s1;
+            stations.push_back({s1 < len ? double(i) + s1 / len : double(i + 1), integral});
+        }
+    }
+    if (!too_long) return e;
+    if (on_face == nullptr || on_face->surface == nullptr)
+        throw Error("edge_" + std::to_string(e.edge) + ": no face uses it, so it cannot be cut to the size field");
+
+    const std::size_t min_segments = e.first_vertex == e.last_vertex ? 3 : 1;
+    const std::size_t n = std::max(min_segments, static_cast<std::size_t>(std::ceil(integral - 1e-9)));
+    EdgePolyline out;
+    out.edge = e.edge;
+    out.first_vertex = e.first_vertex;
+    out.last_vertex = e.last_vertex;
+    out.points.push_back(e.points.front());
+    out.params.push_back(e.params.front());
+    const SurfaceMap& surface = *on_face->surface;
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < n; ++j) {
+        const double target = integral * double(j) / double(n);
+        while (k + 2 < stations.size() && stations[k + 1].integral < target) ++k;
+        const Station &lo = stations[k], &hi = stations[k + 1];
+        const double f = hi.integral > lo.integral ? (target - lo.integral) / (hi.integral - lo.integral) : 0.5;
+        const double position = lo.position + std::clamp(f, 0.0, 1.0) * (hi.position - lo.position);
+        const std::size_t i = std::min(static_cast<std::size_t>(position), m - 1);
+        const double t = e.params[i] + (position - double(i)) * (e.params[i + 1] - e.params[i]);
+        out.points.push_back(surface.point(surface.edge_uv(on_face->use, t)));
+        out.params.push_back(t);
+    }
+    out.points.push_back(e.points.back());
+    out.params.push_back(e.params.back());
+    return out;
+}
+
 class BoundaryWriter {
 public:
     BoundaryWriter(const HybridMesh& mesh, FaceBoundary& b) : mesh_(mesh), b_(b) {}
@@ -51,6 +131,41 @@ private:
 std::string face_label(const SurfaceMap& surface) { return "face_" + std::to_string(surface.face()); }
 
 }  // namespace
+
+void add_edge_faces(const SurfaceMap& surface, std::unordered_map<index_t, EdgeOnFace>& out) {
+    for (const TrimLoop& loop : surface.trimming_loops(0))
+        for (const EdgeUse& use : loop.edges) out.try_emplace(use.edge, EdgeOnFace{&surface, use});
+}
+
+std::vector<EdgePolyline> follow_size_field(std::span<const EdgePolyline> edges,
+                                            const std::unordered_map<index_t, EdgeOnFace>& on_face,
+                                            const SizeField& size) {
+    std::vector<EdgePolyline> out;
+    out.reserve(edges.size());
+    std::vector<Station> stations;
+    for (const EdgePolyline& e : edges) {
+        if (e.points.size() < 2 || e.params.size() != e.points.size()) {
+            out.push_back(e);  // add_edge_nodes reports it
+            continue;
+        }
+        const auto it = on_face.find(e.edge);
+        out.push_back(follow_one(e, it == on_face.end() ? nullptr : &it->second, size, stations));
+    }
+    return out;
+}
+
+void add_short_edge_sources(std::span<const EdgePolyline> edges, const SizeField& size, std::vector<SizeSource>& out) {
+    for (const EdgePolyline& e : edges) {
+        const std::size_t n = e.points.size();
+        if (n < 2) continue;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double before = k > 0 ? norm(e.points[k] - e.points[k - 1]) : 0;
+            const double after = k + 1 < n ? norm(e.points[k + 1] - e.points[k]) : 0;
+            const double local = k == 0 ? after : k + 1 == n ? before : 0.5 * (before + after);
+            if (local > 0 && local < kShortSegment * size.at(e.points[k])) out.push_back({e.points[k], local});
+        }
+    }
+}
 
 FaceBoundary face_boundary(const SurfaceMap& surface, std::span<const EdgePolyline> edges,
                            const EdgeNodes& edge_nodes, std::span<const index_t> tube_loop_edges,

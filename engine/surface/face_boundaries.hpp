@@ -11,6 +11,7 @@
 #include "engine/geometry/tube_data.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/surface/face_mesher.hpp"
+#include "engine/surface/size_field.hpp"
 
 namespace tubemesh::surface {
 
@@ -20,6 +21,35 @@ struct EdgeNodes {
     std::unordered_map<index_t, index_t> polyline_of;  // B-rep edge id -> polyline index
     std::unordered_map<index_t, index_t> vertex_node;  // B-rep vertex id -> mesh point id
 };
+
+// Where an edge can be evaluated: a face that uses it and that use (the point at curve
+// parameter t is surface->point(surface->edge_uv(use, t))).
+struct EdgeOnFace {
+    const SurfaceMap* surface = nullptr;
+    EdgeUse use;
+};
+
+// Records every edge of the face's trimming loops not recorded yet, so that called face after
+// face in a fixed order each edge gets the first face that uses it.
+void add_edge_faces(const SurfaceMap& surface, std::unordered_map<index_t, EdgeOnFace>& out);
+
+// The polylines, each cut again where `size` asks for shorter segments than it has (geom cuts
+// edges at S, blind to the rings' finer sizes): a polyline with every segment within 1.1 times
+// h(x) along it is kept as it is; any other gets N = ceil(integral of ds / t(s)) segments of
+// equal share of that integral, t(s) = min(h(x(s)), length of geom's segment there), so it
+// follows h near the rings and keeps geom's finer cut (a curved edge's) elsewhere. Its end
+// points stay; the new points are evaluated on the face `on_face` gives for the edge. The
+// result is deterministic and in the input's order.
+// Throws tubemesh::Error when a polyline to cut again has no face in `on_face`.
+std::vector<EdgePolyline> follow_size_field(std::span<const EdgePolyline> edges,
+                                            const std::unordered_map<index_t, EdgeOnFace>& on_face,
+                                            const SizeField& size);
+
+// Size sources on edge nodes whose segments are much shorter (under 0.8 times) than h(x) there
+// (a curved edge cut for its curvature, a short edge between two vertices), asking for their
+// mean segment length: the faces on both sides then grade from the edge's size instead of
+// meeting it with triangles of h(x). Appends to `out`.
+void add_short_edge_sources(std::span<const EdgePolyline> edges, const SizeField& size, std::vector<SizeSource>& out);
 
 // Adds the points of every polyline to the mesh, each B-rep vertex once (the polylines' end
 // points), in polyline order. Throws tubemesh::Error for a polyline with fewer than 2 points

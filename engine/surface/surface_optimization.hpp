@@ -6,7 +6,8 @@
 // only triangles with an angle under 50 degrees are looked at, so a pass costs little more
 // than a scan of the cached triangle qualities. A last sweep evens out sizes where two
 // neighbouring triangles differ by more than 1.4 (mean edge length), moving the apex of one of
-// them without giving up angle. Boundary vertices and edges never change.
+// them while no angle it touches drops below 30 degrees. Boundary vertices and edges never
+// change.
 // Internal to engine/surface.
 #include <vector>
 
@@ -29,7 +30,11 @@ private:
     bool try_collapse(index_t v, index_t w, UvMesh& mesh);
     index_t grading_sweep(const SurfaceMap& surface, index_t first_movable, UvMesh& mesh);
     bool try_grade(const SurfaceMap& surface, UvMesh& mesh, index_t v, index_t a, index_t b);
-    double star_ratio(const UvMesh& mesh, index_t v, const Vec3& at) const;  // over the gathered fan
+    struct StarRatio {
+        double worst = 1;    // the largest size ratio of two neighbouring triangles
+        double penalty = 0;  // sum of log(ratio / 1.4)^2 over the ratios above 1.4
+    };
+    StarRatio star_ratio(const UvMesh& mesh, index_t v, const Vec3& at) const;  // over the gathered fan
     bool gather_ring(const UvMesh& mesh, index_t v);
     double fan_worst() const;  // over the fan gathered last, from the cache
     double fan_cosine(const UvMesh& mesh, const Vec3& at, std::size_t j) const;  // of (at, ring j, ring j+1)

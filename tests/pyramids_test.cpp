@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/pyramids/build_pyramids.hpp"
 #include "engine/quality/quality.hpp"
@@ -426,6 +427,56 @@ TEST(Pyramids, FaceAboveTheIdealApexPushesItDown) {
     EXPECT_GE(r.stats.verdicts[static_cast<int>(Verdict::TooCloseToFace)], 5u);
     EXPECT_EQ(r.stats.try_node[4], 1u);
     EXPECT_NEAR(u.apex_height(), 0.98154 * std::pow(0.9, 5), 1e-12);
+}
+
+// A ring's last-station quad meeting its host face at an acute angle (paper-ex3's oblique
+// oil hole on the curved journal at --size 40: 72 degrees at the sides of its ends): the
+// unit quad in z = 0 facing +z, and a host face through its edge y = 1 leaning over it at
+// `degrees` inside the region, triangulated with that edge and no node near the quad. Every
+// point of the normal line down to the lowest try node is too close to the host, at 60
+// degrees even beyond it, so all the paper's candidates fail; a try node moved off the host
+// gives a good pyramid inside the wedge.
+struct LeaningHost {
+    HybridMesh m;
+    std::vector<index_t> quad, tris;
+    index_t region;
+    Vec3 out;  // the host's unit normal, out of the region
+    explicit LeaningHost(double degrees) {
+        const double a = degrees * std::numbers::pi / 180;
+        const Vec3 up{0, -std::cos(a), std::sin(a)};  // in the host, away from the edge
+        out = {0, std::sin(a), std::cos(a)};
+        quad = {m.add_point(0, 0, 0), m.add_point(1, 0, 0), m.add_point(1, 1, 0), m.add_point(0, 1, 0)};
+        auto along = [&](double x, double s) { return m.add_point(x + s * up.x, 1 + s * up.y, s * up.z); };
+        const index_t e0 = along(-3, 0), e1 = along(4, 0), t0 = along(-3, 3), tm = along(0.5, 3), t1 = along(4, 3);
+        const index_t q2 = quad[2], q3 = quad[3];
+        for (std::array<index_t, 3> t : {std::array<index_t, 3>{q3, q2, tm}, {q2, e1, t1}, {q2, t1, tm}, {e0, q3, tm},
+                                         {e0, tm, t0}}) {
+            const Vec3 p0 = m.point(t[0]), p1 = m.point(t[1]), p2 = m.point(t[2]);
+            if (dot(cross(p1 - p0, p2 - p0), out) < 0) std::swap(t[1], t[2]);
+            tris.insert(tris.end(), t.begin(), t.end());
+        }
+        region = m.region_id("pyramids");
+    }
+};
+
+TEST(Pyramids, HostLeaningOverAnEndQuadMovesTheTryNodeOffIt) {
+    for (const double degrees : {72.0, 60.0}) {
+        SCOPED_TRACE(degrees);
+        LeaningHost u(degrees);
+        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region});
+        ASSERT_EQ(u.m.cell_count(CellKind::Pyramid), 1u);
+        // The ideal node and the five try nodes on the normal line were refused by the host.
+        EXPECT_GE(r.stats.verdicts[static_cast<int>(Verdict::TooCloseToFace)], 6u);
+        EXPECT_EQ(r.stats.moved_try_nodes, 1u);
+        EXPECT_EQ(r.stats.drawback_rounds, 0u);
+        EXPECT_GE(pyramid_quality(u.m)[0], 0.45);
+        // The apex is inside the wedge, at least the lowest try node's distance threshold
+        // (0.65 · 0.9^5 h) from the host and from the quad's plane.
+        const Vec3 apex = u.m.point(u.m.cell(CellKind::Pyramid, 0)[4]);
+        const double margin = 0.65 * std::pow(0.9, 5);
+        EXPECT_GE(-dot(apex - Vec3{0, 1, 0}, u.out), margin);
+        EXPECT_GE(apex.z, margin);
+    }
 }
 
 TEST(Pyramids, EdgeNearANewEdgeRefusesTheApex) {

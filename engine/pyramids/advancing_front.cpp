@@ -14,6 +14,13 @@ std::string where(const Vec3& p) {
     return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
 }
 
+// Every front of `fronts` is one of `among`.
+bool all_in(std::vector<index_t> fronts, std::vector<index_t> among) {
+    std::sort(fronts.begin(), fronts.end());
+    std::sort(among.begin(), among.end());
+    return std::includes(among.begin(), among.end(), fronts.begin(), fronts.end());
+}
+
 }  // namespace
 
 AdvancingFront::AdvancingFront(const World& world, FrontState& state, const PyramidOptions& opt, PyramidStats& stats)
@@ -41,8 +48,11 @@ void AdvancingFront::run() {
         if (still.empty()) return;
         if (round == opt_.max_drawback_rounds) fail(still, round);
         const std::vector<index_t> freed = draw_back(still);
-        if (freed.empty()) fail(still, round);
-        ++stats_.drawback_rounds;
+        // Nothing to free around fronts that were squeezed already: another round would
+        // repeat this one. Otherwise the next round squeezes them, even with nothing freed,
+        // since only the squeezed pass moves try nodes off the faces (candidates.hpp).
+        if (freed.empty() && all_in(still, first)) fail(still, round);
+        if (!freed.empty()) ++stats_.drawback_rounds;
         stats_.drawback_deleted += static_cast<index_t>(freed.size());
         first = still;
         active = freed;

@@ -23,7 +23,8 @@ public:
     AdvancingFront(const World& world, FrontState& state, const PyramidOptions& opt, PyramidStats& stats);
 
     // Puts a pyramid on every front, or throws tubemesh::Error naming the first front that
-    // found none after opt.max_drawback_rounds drawbacks (or when a drawback frees nothing).
+    // found none after opt.max_drawback_rounds drawbacks (or when a drawback frees nothing
+    // around fronts that were squeezed already).
     void run();
 
     // Candidate verdicts over all threads.

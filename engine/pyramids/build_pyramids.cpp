@@ -139,7 +139,10 @@ void append_to_mesh(HybridMesh& mesh, std::span<const Front> fronts, const Front
             ++s.existing;
         else if (how == kHowExistingRelaxed)
             ++s.existing_relaxed;
-        else if (how >= kHowTryBase)
+        else if (how >= kHowMovedTryBase) {
+            ++s.try_node[how - kHowMovedTryBase];
+            ++s.moved_try_nodes;
+        } else if (how >= kHowTryBase)
             ++s.try_node[how - kHowTryBase];
         for (int f = 0; f < 4; ++f) {
             if (!state.lateral_free(i, f)) {

@@ -12,7 +12,8 @@
 //
 // Added to the paper, each for a reason given where it is implemented: a quality floor
 // (options below), a refusal of existing apexes that would make the front non-manifold
-// (front_link.hpp), and a precise reading of the edge-distance criterion (criteria.hpp).
+// (front_link.hpp), a precise reading of the edge-distance criterion (criteria.hpp), and try
+// nodes moved off the faces they are too close to, tried last (candidates.hpp).
 //
 // Fronts whose search spheres do not overlap cannot see each other's work, so they are
 // evaluated in parallel in conflict-free batches (batches.hpp) and committed in a fixed
@@ -102,6 +103,7 @@ struct PyramidStats {
     index_t existing = 0;                    // an existing node, normal criteria
     index_t existing_relaxed = 0;            // an existing node, relaxed criteria
     std::array<index_t, 8> try_node{};       // try_node[k-1]: the k-th try node (relaxed)
+    index_t moved_try_nodes = 0;             // of those, moved off the faces (candidates.hpp)
     index_t shared_triangles = 0;            // pyramid triangles that are a face of two pyramids
     index_t covered_boundary_triangles = 0;  // boundary triangles that became a pyramid face
     // Events over the whole run (a front rejected in two rounds counts twice).

@@ -49,6 +49,21 @@ Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOp
         if (try_candidate(f, {kNoIndex, node}, t, how, vis, world.state, tally, choice)) return choice;
         if (try_existing(f, t, kHowExistingRelaxed, vis, world.state, tally, choice)) return choice;
     }
+    // Squeezed and still none of the paper's candidates fits: the try nodes moved off the
+    // faces they are too close to (criteria.hpp, move_off_faces), largest first. Only here,
+    // after a drawback: where the neighbours' pyramids are what is in the way, the drawback
+    // gives better pyramids than a tilted apex would.
+    if (pass != Pass::Squeezed) return choice;
+    const Verdict refusal = choice.refusal;
+    for (int k = 1; k <= opt.try_nodes; ++k) {
+        const double rate = std::pow(opt.relax_rate, k);
+        const Thresholds t = Thresholds::at(f, opt, rate);
+        Vec3 node = f.centroid + (opt.height_factor * f.h * rate) * f.normal;
+        if (!move_off_faces(f, t, vis, node)) continue;
+        const auto how = static_cast<std::uint8_t>(kHowMovedTryBase + k - 1);
+        if (try_candidate(f, {kNoIndex, node}, t, how, vis, world.state, tally, choice)) return choice;
+    }
+    choice.refusal = refusal;  // the error message names what stopped the paper's try nodes
     return choice;
 }
 

@@ -12,6 +12,10 @@
 //    relaxed candidates from k = try_nodes down to 1. With its neighbours' pyramids deleted
 //    such a front would take a large apex again and starve them again; the smallest pyramid
 //    that fits leaves them the most room.
+//  * squeezed pass, when none of those fits either: the try nodes k = 1..try_nodes, each
+//    moved off the faces it is too close to (criteria.hpp, move_off_faces). For a front that
+//    the host face itself leaves no room on the normal line (an end quad under a host that
+//    leans over it), which no drawback can change.
 #include <array>
 #include <cstdint>
 

@@ -86,6 +86,35 @@ bool too_close_to_face(const NewPyramid& y, const Visible& vis, double d2min) {
     return false;
 }
 
+// The visible face nearest to p among those nearer than sqrt(d2min) (a new node contains no
+// face's node, so none is skipped): the point of it nearest to p and, but for an obstacle
+// (which has no orientation), the normal of the triangle holding that point, pointing into
+// the unmeshed region. False when no face is that near.
+struct NearFace {
+    Vec3 point;
+    Vec3 normal;  // zero for an obstacle
+};
+
+bool nearest_close_face(const Vec3& p, const Visible& vis, double d2min, NearFace& out) {
+    double best = d2min;
+    bool found = false;
+    auto consider = [&](const VisibleFace& face, const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Vec3 q = closest_point_on_triangle(p, a, b, c);
+        const double d2 = distance2(p, q);
+        if (!(d2 < best)) return;
+        best = d2;
+        found = true;
+        out.point = q;
+        out.normal = face.role == FaceRole::Obstacle ? Vec3{0, 0, 0} : cross(b - a, c - a);
+    };
+    for (const VisibleFace& face : vis.faces) {
+        if (box_distance2(face.box, p) >= best) continue;
+        consider(face, face.p[0], face.p[1], face.p[2]);
+        if (face.size == 4) consider(face, face.p[0], face.p[2], face.p[3]);
+    }
+    return found;
+}
+
 bool contains_node(const NewPyramid& y, const Visible& vis) {
     for (const NearNode& n : vis.nodes) {
         if (y.has(n.id) || box_distance2(y.box, n.p) > 0) continue;
@@ -202,6 +231,34 @@ Thresholds Thresholds::at(const Front& f, const PyramidOptions& opt, double rate
     const double d = opt.distance_factor * f.h * rate;
     t.min_distance2 = d * d;
     return t;
+}
+
+bool move_off_faces(const Front& f, const Thresholds& t, const Visible& vis, Vec3& p) {
+    const double target = std::sqrt(t.min_distance2) * (1.0 + 1e-6);
+    const double reach2 = f.reach * f.reach;
+    bool moved = false;
+    for (int step = 0;; ++step) {
+        NearFace near;
+        if (!nearest_close_face(p, vis, t.min_distance2, near)) return moved;
+        // Still near some face after the last move: the faces around p leave no room.
+        if (step == kMoveSteps) return false;
+        const double area = norm(near.normal);
+        if (area > 0) {
+            // An oriented face: to the target distance in front of its plane, whichever side p
+            // is on (a try node can lie behind a face that leans over the quad). The distance
+            // to the triangle is at least that to its plane, and the move is at most twice the
+            // threshold, since p was within it.
+            const Vec3 n = (1.0 / area) * near.normal;
+            p = p + (target - dot(p - near.point, n)) * n;
+        } else {
+            const Vec3 away = p - near.point;
+            const double d = norm(away);
+            if (!(d > 0)) return false;  // on an obstacle: no side to leave it by
+            p = p + ((target - d) / d) * away;
+        }
+        moved = true;
+        if (distance2(p, f.ideal) >= reach2) return false;
+    }
 }
 
 Verdict judge(const Front& f, const Candidate& c, const Thresholds& t, const Visible& vis, const FrontState& state) {

@@ -43,4 +43,18 @@ struct Thresholds {
 
 Verdict judge(const Front& f, const Candidate& c, const Thresholds& t, const Visible& vis, const FrontState& state);
 
+// A try node that is too close to a face, moved off the nearest such face to the distance
+// threshold — along the face's normal to that distance in front of its plane (front faces
+// are oriented into the unmeshed region), straight away from it for an obstacle — and again
+// while another face is too close, at most kMoveSteps times. Not in the paper, whose try
+// nodes stay on the normal line: where a host face leans over a ring's end quad (an oblique
+// or curved end, where the last station meets the host at an acute angle) every point of
+// that line down to M is too close to the host, or even beyond it, while a point tilted away
+// from it is a good apex. True when p was moved and is now clear of every face and inside
+// the front's reach (so batches stay independent, fronts.hpp); false otherwise, p then
+// meaningless. The moved node still has to pass judge (angle, quality floor, edges,
+// intersections) like any other candidate.
+inline constexpr int kMoveSteps = 4;
+bool move_off_faces(const Front& f, const Thresholds& t, const Visible& vis, Vec3& p);
+
 }  // namespace tubemesh::pyramids

@@ -21,8 +21,16 @@
 namespace tubemesh::pyramids {
 
 // How a front got its apex (PyramidStats): 0 none, then these, then kHowTryBase + k - 1 for
-// the k-th try node.
-enum : std::uint8_t { kHowNone = 0, kHowIdeal = 1, kHowExisting = 2, kHowExistingRelaxed = 3, kHowTryBase = 4 };
+// the k-th try node, then kHowMovedTryBase + k - 1 for the k-th try node moved off the faces
+// (candidates.hpp).
+enum : std::uint8_t {
+    kHowNone = 0,
+    kHowIdeal = 1,
+    kHowExisting = 2,
+    kHowExistingRelaxed = 3,
+    kHowTryBase = 4,
+    kHowMovedTryBase = kHowTryBase + 8
+};
 
 // A front's accepted candidate. node == kNoIndex: a new apex at `position`. When none was
 // accepted, `refusal` says why the last new node tried (ideal or try node) was refused.

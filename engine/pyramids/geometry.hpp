@@ -46,46 +46,44 @@ inline double box_distance2(const Box& a, const Box& b) {
 
 inline double box_distance2(const Box& a, const Vec3& p) { return box_distance2(a, Box::of(p)); }
 
-// Squared distance from p to the closed triangle abc (Ericson, Real-Time Collision
-// Detection, 5.1.5: Voronoi regions of the vertices, edges and face). A degenerate triangle
-// falls through to its edges, which is the right answer.
-inline double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+// The point of the closed triangle abc nearest to p (Ericson, Real-Time Collision Detection,
+// 5.1.5: Voronoi regions of the vertices, edges and face). A degenerate triangle falls
+// through to its edges, which is the right answer.
+inline Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return norm2(ap);
+    if (d1 <= 0 && d2 <= 0) return a;
     const Vec3 bp = p - b;
     const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return norm2(bp);
+    if (d3 >= 0 && d4 <= d3) return b;
     const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        const double t = d1 / (d1 - d3);
-        return distance2(p, a + t * ab);
-    }
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
     const Vec3 cp = p - c;
     const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return norm2(cp);
+    if (d6 >= 0 && d5 <= d6) return c;
     const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        const double t = d2 / (d2 - d6);
-        return distance2(p, a + t * ac);
-    }
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
     const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-        const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return distance2(p, b + t * (c - b));
-    }
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
     const double denom = va + vb + vc;
-    if (!(denom > 0)) {  // degenerate (collinear) triangle: nearest of its three edges
+    if (!(denom > 0)) {  // degenerate (collinear) triangle: nearest point of its three edges
         auto seg = [&](const Vec3& s, const Vec3& e) {
             const Vec3 d = e - s;
             const double l2 = norm2(d);
-            const double t = l2 > 0 ? std::clamp(dot(p - s, d) / l2, 0.0, 1.0) : 0.0;
-            return distance2(p, s + t * d);
+            return s + (l2 > 0 ? std::clamp(dot(p - s, d) / l2, 0.0, 1.0) : 0.0) * d;
         };
-        return std::min({seg(a, b), seg(b, c), seg(c, a)});
+        const Vec3 q[3] = {seg(a, b), seg(b, c), seg(c, a)};
+        int best = 0;
+        for (int k = 1; k < 3; ++k)
+            if (distance2(p, q[k]) < distance2(p, q[best])) best = k;
+        return q[best];
     }
-    const double v = vb / denom, w = vc / denom;
-    return distance2(p, a + v * ab + w * ac);
+    return a + (vb / denom) * ab + (vc / denom) * ac;
+}
+
+// Squared distance from p to the closed triangle abc.
+inline double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return distance2(p, closest_point_on_triangle(p, a, b, c));
 }
 
 }  // namespace tubemesh::pyramids

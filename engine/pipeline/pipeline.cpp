@@ -169,11 +169,13 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
     out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), to);
     const tets::TetStepStats& s = out.tet_stats;
     PhaseReport r{"tets", seconds_since(t0), {}};
+    // Recovered: front edges / triangles the Delaunay tets of the front's points lacked, all
+    // restored by flips or Steiner points (recovery throws otherwise).
     r.counts = {{"tets", double(s.tets)},
                 {"front triangles", double(s.front_triangles)},
                 {"new nodes", double(s.new_points)},
-                {"missing front edges", double(s.recovery.missing_edges)},
-                {"missing front faces", double(s.recovery.missing_faces)},
+                {"front edges recovered", double(s.recovery.missing_edges)},
+                {"front faces recovered", double(s.recovery.missing_faces)},
                 {"steiner points kept", double(s.recovery.steiner_kept)},
                 {"refinement rounds", double(s.refine.rounds)},
                 {"flips", double(s.optimise.flips23 + s.optimise.flips32 + s.optimise.flips44 + s.optimise.edge_removals)},

@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <random>
 #include <string>
@@ -23,6 +22,7 @@
 
 #include <unistd.h>
 
+#include "bench/process_measure.hpp"
 #include "engine/delaunay/delaunay.hpp"
 
 namespace {
@@ -57,20 +57,8 @@ std::map<std::size_t, double>& tetgen_rate() {
     return rate;
 }
 
-// Resident-set figures from /proc/self/status, in bytes.
-long status_kb(const char* key) {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    const std::string k = std::string(key) + ":";
-    while (std::getline(in, line))
-        if (line.rfind(k, 0) == 0) return std::atol(line.c_str() + k.size());
-    return -1;
-}
-
-void reset_peak_rss() {
-    std::ofstream out("/proc/self/clear_refs");
-    out << "5";
-}
+using tubemesh::bench::reset_peak_rss;
+using tubemesh::bench::status_kb;
 
 void BM_Delaunay(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));

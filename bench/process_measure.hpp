@@ -1,0 +1,34 @@
+#pragma once
+// What the benchmarks measure besides time: this process's resident set (Linux /proc), and
+// another program (a peer mesher) run to completion with its wall time and peak resident set.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace tubemesh::bench {
+
+// A "Vm..." line of /proc/self/status ("VmRSS", "VmHWM"), in KiB; -1 when it is missing.
+long status_kb(const char* key);
+
+// Lowers the peak (VmHWM) to the current resident set, so that the next peak is the work's own.
+void reset_peak_rss();
+
+// User + system CPU seconds of this process so far, all threads: against the wall time it shows
+// how much of the shared machine the work got.
+double process_cpu_seconds();
+
+struct ProgramRun {
+    int exit_code = -1;       // the program's exit status; 124 when the time limit stopped it
+    double wall_seconds = 0;  // from spawn to exit
+    double cpu_seconds = 0;   // user + system, all its threads and processes
+    double peak_rss_bytes = 0;
+    std::string output;  // stdout and stderr, interleaved
+};
+
+// Runs argv (argv[0] looked up in PATH, no shell) under `timeout limit_seconds`, stdin from
+// /dev/null, stdout and stderr into `log`. The peak resident set is the largest of the
+// program's processes (wait4 reports the waited child together with its own children).
+ProgramRun run_program(const std::vector<std::string>& argv, const std::filesystem::path& log,
+                       double limit_seconds);
+
+}  // namespace tubemesh::bench

@@ -1,12 +1,26 @@
 // Discretisation (paper §3.2): end loops with equal node counts and node 0 at the same angle,
-// the centre line on the axis, and B-rep edges cut once by arc length.
+// the centre line on the axis, and B-rep edges cut once by arc length, a curved one into
+// segments that turn by at most 0.065 rad (1024 segments at most).
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Elips.hxx>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "geom/discretize.hpp"
+#include "geom/discretize_edges.hpp"
 #include "tests/geom_tubes_solids.hpp"
 
 namespace tubemesh {
@@ -168,6 +182,127 @@ TEST(GeomDiscretize, EdgesAreCutOnceAtSizeS) {
     }
     const std::set<index_t> loop_edges{c.geometry.tubes[0].loop1_edges[0], c.geometry.tubes[0].loop2_edges[0]};
     for (index_t id : loop_edges) EXPECT_EQ(ids.count(id), 0u);
+}
+
+// Curved edges: no segment turns by more than 0.065 rad (at most 1024 segments per edge).
+constexpr double kMaxTurn = 0.065;
+
+// A prism of height 0.2 over the ellipse of semi-axes a (along x) and b (along y) about the
+// origin: two elliptic edges (z = 0 and 0.2) and a straight seam.
+TopoDS_Solid elliptic_prism(double a, double b) {
+    const gp_Elips ellipse(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)), a, b);
+    const TopoDS_Face base =
+        BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(ellipse).Edge()).Wire()).Face();
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(base, gp_Vec(0, 0, 0.2)).Shape();
+    TopExp_Explorer it(prism, TopAbs_SOLID);
+    if (!it.More()) throw std::runtime_error("no solid from the prism");
+    return TopoDS::Solid(it.Current());
+}
+
+// The angle between the directions of the chords k-1 -> k and k -> k+1 at every inner point.
+double max_chord_turn(const EdgePolyline& e) {
+    double worst = 0;
+    for (std::size_t k = 1; k + 1 < e.points.size(); ++k) {
+        const Vec3 u = sub(e.points[k], e.points[k - 1]), v = sub(e.points[k + 1], e.points[k]);
+        worst = std::max(worst, std::acos(std::clamp(dot(u, v) / (norm(u) * norm(v)), -1.0, 1.0)));
+    }
+    return worst;
+}
+
+TEST(GeomDiscretize, CircleEdgeSegmentsTurnAtMost0065) {
+    // The blind hole's rim (z = 1) and bottom (z = 0.7) circles, at an S far above the box
+    // and at one that cuts the straight edges. Their segment count does not depend on the
+    // radius or on S here: a whole circle turns by 2 pi, so ceil(2 pi / 0.065) = 97 segments
+    // are the fewest that keep each within 0.065 rad.
+    for (const double r : {0.1, 1e-3}) {
+        SCOPED_TRACE("radius " + std::to_string(r));
+        const geom::Model model = test::model_of(test::box_with_blind_hole(r, 0.3));
+        for (const double S : {10.0, 0.25}) {
+            const std::vector<EdgePolyline> edges = geom::discretize_edges(model, {}, S);
+            int circles = 0, straight = 0;
+            for (const EdgePolyline& e : edges) {
+                const bool circle = e.first_vertex == e.last_vertex &&
+                                    std::all_of(e.points.begin(), e.points.end(), [&](const Vec3& p) {
+                                        return std::abs(std::hypot(p.x - 0.5, p.y - 0.5) - r) < 1e-6 * r;
+                                    });
+                if (!circle) {
+                    // Straight: the box's edges (length 1) and the hole's seam (0.3), at S alone.
+                    const double length = norm(sub(e.points.back(), e.points.front()));
+                    EXPECT_EQ(e.points.size(), std::size_t(std::ceil(length / S - 1e-9)) + 1) << "edge " << e.edge;
+                    ++straight;
+                    continue;
+                }
+                ++circles;
+                EXPECT_EQ(e.points.size(), 98u) << "edge " << e.edge;
+                // Each segment's arc turns by its central angle, 2 asin(chord / 2r); the
+                // polygon's corners turn by the same angles.
+                for (std::size_t k = 0; k + 1 < e.points.size(); ++k) {
+                    const double chord = norm(sub(e.points[k + 1], e.points[k]));
+                    EXPECT_LE(2 * std::asin(chord / (2 * r)), kMaxTurn) << "edge " << e.edge << " segment " << k;
+                }
+                EXPECT_LE(max_chord_turn(e), kMaxTurn) << "edge " << e.edge;
+            }
+            EXPECT_EQ(circles, 2);
+            EXPECT_EQ(straight, 13);
+        }
+    }
+}
+
+TEST(GeomDiscretize, FinerSizeStillWinsOnACircleEdge) {
+    // r = 0.1 at S = 0.005: 126 segments by size, more than the 97 the turn asks for.
+    const geom::Model model = test::model_of(test::box_with_blind_hole(0.1, 0.3));
+    int circles = 0;
+    for (const EdgePolyline& e : geom::discretize_edges(model, {}, 0.005)) {
+        if (std::abs(std::hypot(e.points[0].x - 0.5, e.points[0].y - 0.5) - 0.1) > 1e-7) continue;
+        if (e.first_vertex != e.last_vertex) continue;  // the seam starts on the circle too
+        ++circles;
+        EXPECT_EQ(e.points.size(), 127u);
+    }
+    EXPECT_EQ(circles, 2);
+}
+
+TEST(GeomDiscretize, EllipseEdgeSegmentsTurnAtMost0065) {
+    // Semi-axes 0.5 and 0.25: the curvature runs from b / a^2 = 1 to a / b^2 = 8. The tangent
+    // at eccentric angle t is (-a sin t, b cos t); the curve turns between two points by the
+    // angle between their tangents (it is convex).
+    const double a = 0.5, b = 0.25;
+    const std::vector<EdgePolyline> edges = geom::discretize_edges(test::model_of(elliptic_prism(a, b)), {}, 10.0);
+    int ellipses = 0;
+    for (const EdgePolyline& e : edges) {
+        if (e.first_vertex != e.last_vertex) {  // the seam, straight: one segment at S
+            EXPECT_EQ(e.points.size(), 2u);
+            continue;
+        }
+        ++ellipses;
+        const auto tangent = [&](const Vec3& p) {
+            const double t = std::atan2(p.y / b, p.x / a);
+            return Vec3{-a * std::sin(t), b * std::cos(t), 0};
+        };
+        double worst = 0;
+        for (std::size_t k = 0; k + 1 < e.points.size(); ++k) {
+            const Vec3 u = tangent(e.points[k]), v = tangent(e.points[k + 1]);
+            worst = std::max(worst, std::acos(std::clamp(dot(u, v) / (norm(u) * norm(v)), -1.0, 1.0)));
+        }
+        EXPECT_LE(worst, kMaxTurn) << "edge " << e.edge;
+        EXPECT_GT(worst, 0.5 * kMaxTurn) << "edge " << e.edge;  // not cut far finer than asked
+        EXPECT_LE(max_chord_turn(e), kMaxTurn) << "edge " << e.edge;
+        std::printf("  ellipse %g x %g: %zu segments, largest turn %.4f rad\n", a, b, e.points.size() - 1, worst);
+    }
+    EXPECT_EQ(ellipses, 2);
+}
+
+TEST(GeomDiscretize, CurvatureCutIsCappedAt1024SegmentsPerEdge) {
+    // Semi-axes 0.5 and 0.05: curvature up to 200 over a length of about 2, which would ask
+    // for about 6200 segments of 0.065 rad.
+    const std::vector<EdgePolyline> edges = geom::discretize_edges(test::model_of(elliptic_prism(0.5, 0.05)), {}, 10.0);
+    int ellipses = 0;
+    for (const EdgePolyline& e : edges) {
+        if (e.first_vertex != e.last_vertex) continue;
+        ++ellipses;
+        EXPECT_EQ(e.points.size(), 1025u) << "edge " << e.edge;
+        EXPECT_EQ(e.params.size(), 1025u) << "edge " << e.edge;
+    }
+    EXPECT_EQ(ellipses, 2);
 }
 
 TEST(GeomDiscretize, RingNodeCountMakesSquareQuads) {

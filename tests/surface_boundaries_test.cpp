@@ -1,14 +1,18 @@
 // From geometry to face boundaries: edges cut once and shared, seams used twice, a cone's apex
-// (a degenerate edge), a tube's end loop replaced by its ring's outer polygon.
+// (a degenerate edge), a tube's end loop replaced by its ring's outer polygon; edges cut again
+// to the size field, short edge segments as size sources.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <string>
 #include <functional>
 #include <map>
 #include <numbers>
+#include <unordered_map>
 
 #include "engine/surface/face_boundaries.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
@@ -226,6 +230,234 @@ TEST(SurfaceBoundaries, TubeEndLoopIsReplacedByTheRing) {
     EXPECT_NEAR(rep.area, 1 - hole, 1e-12);
     // Without the tube edge list the loop has no polyline to stand on.
     EXPECT_THROW(surface::face_boundary(s, edges, nodes, {}, {}, mesh, 0.05), Error);
+}
+
+// follow_size_field and add_short_edge_sources: B-rep edge polylines against the size field.
+
+// A straight edge on the plane z = 0 (the face's uv is x, y) from a to b, parameter 0 to 1.
+struct PlaneEdge {
+    Vec3 a, b;
+    Vec3 at(double t) const { return a + t * (b - a); }
+    Uv uv(double t) const { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+};
+
+using PlaneFace = TrimmedSurface<PlaneSurface>;
+PlaneFace unit_plane() { return PlaneFace({0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, ParamRange{0, 1}, ParamRange{0, 1}); }
+
+// Every byte of the two polylines equal (points as stored, not up to a tolerance).
+bool same_bytes(const EdgePolyline& a, const EdgePolyline& b) {
+    return a.edge == b.edge && a.first_vertex == b.first_vertex && a.last_vertex == b.last_vertex &&
+           a.points.size() == b.points.size() && a.params.size() == b.params.size() &&
+           std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(Vec3)) == 0 &&
+           std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(double)) == 0;
+}
+bool same_bytes(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+
+// The contract's t(s) = min(h(x(s)), length of the input segment at s), integrated by the
+// midpoint rule along the input polyline from position p0 to p1 (segment index + fraction).
+double integral_over_t(const EdgePolyline& in, const SizeField& size, double p0, double p1) {
+    const int steps = 2000;
+    double sum = 0;
+    for (int k = 0; k < steps; ++k) {
+        const double p = p0 + (p1 - p0) * (k + 0.5) / steps;
+        const std::size_t i = std::min(std::size_t(p), in.points.size() - 2);
+        const Vec3 a = in.points[i], d = in.points[i + 1] - a;
+        const double len = norm(d);
+        sum += len * (p1 - p0) / steps / std::min(size.at(a + (p - double(i)) * d), len);
+    }
+    return sum;
+}
+
+// Position along the input polyline (segment index + fraction) of curve parameter t.
+double position_of(const EdgePolyline& in, double t) {
+    const auto it = std::upper_bound(in.params.begin(), in.params.end(), t);
+    const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - in.params.begin(), 1) - 1, in.params.size() - 2);
+    return double(i) + (t - in.params[i]) / (in.params[i + 1] - in.params[i]);
+}
+
+// The largest segment length over h at the segment's midpoint. (Against h at the segment's
+// small end it can reach about 1.12 where h grows at the full rate g: N = ceil(I) bounds each
+// segment's integral of ds / h, not its length over the smallest h along it.)
+double worst_length_over_midpoint_size(const EdgePolyline& e, const SizeField& size) {
+    double worst = 0;
+    for (std::size_t k = 0; k + 1 < e.points.size(); ++k) {
+        const Vec3 a = e.points[k], d = e.points[k + 1] - a;
+        worst = std::max(worst, norm(d) / size.at(a + 0.5 * d));
+    }
+    return worst;
+}
+
+// The contract's cut of `in` into `out`: N = ceil(I) segments, each an equal share I / N of
+// I = integral of ds / t(s), to 1 % (the function integrates by coarser trapezoids).
+void expect_equal_shares(const EdgePolyline& in, const EdgePolyline& out, const SizeField& size) {
+    const double total = integral_over_t(in, size, 0, double(in.points.size() - 1));
+    const std::size_t n = out.points.size() - 1;
+    EXPECT_EQ(n, std::size_t(std::ceil(total)));
+    for (std::size_t k = 0; k < n; ++k)
+        EXPECT_NEAR(integral_over_t(in, size, position_of(in, out.params[k]), position_of(in, out.params[k + 1])),
+                    total / double(n), 0.01 * total / double(n))
+            << "segment " << k;
+}
+
+TEST(SurfaceEdgeSizes, StraightEdgeIsCutAgainNearAPointSource) {
+    PlaneFace s = unit_plane();
+    const PlaneEdge line{{0, 0, 0}, {1, 0, 0}};
+    s.add_loop({{{1, true}, 0, 1, [&](double t) { return line.uv(t); }}});
+    std::vector<EdgePolyline> in = {cut(1, 1, 2, 0, 1, 5, [&](double t) { return line.at(t); })};  // at S
+    // The B-rep vertices' own points, a little off the curve (within a vertex's tolerance).
+    in[0].points.front() = {0, 1e-9, 0};
+    in[0].points.back() = {1, -1e-9, 0};
+    const std::unordered_map<index_t, surface::EdgeOnFace> on_face = {{1, {&s, {1, true}}}};
+    // h = 0.015 where the edge passes the source, S = 0.2 from x = 0.8 on.
+    const SizeField size({0.2}, {{{0.05, 0.02, 0}, 0.01}});
+    const std::vector<EdgePolyline> out = surface::follow_size_field(in, on_face, size);
+    ASSERT_EQ(out.size(), 1u);
+    const EdgePolyline& e = out[0];
+    EXPECT_EQ(e.edge, 1u);
+    EXPECT_EQ(e.first_vertex, 1u);
+    EXPECT_EQ(e.last_vertex, 2u);
+    ASSERT_EQ(e.points.size(), e.params.size());
+    ASSERT_GE(e.points.size(), 2u);
+    // The end points are the input's, bit for bit (B-rep vertices shared with other edges).
+    EXPECT_TRUE(same_bytes(e.points.front(), in[0].points.front()));
+    EXPECT_TRUE(same_bytes(e.points.back(), in[0].points.back()));
+    EXPECT_EQ(e.params.front(), 0.0);
+    EXPECT_EQ(e.params.back(), 1.0);
+    // New points are the face's points at their parameters: on the line, at x = t.
+    for (std::size_t k = 1; k < e.points.size(); ++k) {
+        EXPECT_GT(e.params[k], e.params[k - 1]) << "point " << k;
+        if (k + 1 == e.points.size()) break;
+        EXPECT_EQ(e.points[k].x, e.params[k]) << "point " << k;
+        EXPECT_EQ(e.points[k].y, 0.0);
+        EXPECT_EQ(e.points[k].z, 0.0);
+    }
+    expect_equal_shares(in[0], e, size);
+    // So it follows h: the segment by the source is about h there, none is longer than 1.1 h.
+    EXPECT_LT(norm(e.points[1] - e.points[0]), 1.1 * size.at(e.points[0]));
+    const double worst = worst_length_over_midpoint_size(e, size);
+    EXPECT_LE(worst, 1.1);
+    std::printf("  straight edge: %zu -> %zu segments, worst length / h(midpoint) %.3f\n", in[0].points.size() - 1,
+                e.points.size() - 1, worst);
+}
+
+TEST(SurfaceEdgeSizes, EdgeWithinTheSizeFieldIsKeptAsItIs) {
+    // Segments of 0.21 = 1.05 h (h = S = 0.2 along the edge; the source is 3 away), without a
+    // face to evaluate on: kept as given, so no face is needed.
+    const PlaneEdge line{{0, 0, 0}, {1.05, 0, 0}};
+    const std::vector<EdgePolyline> in = {cut(4, 1, 2, 0, 1, 5, [&](double t) { return line.at(t); })};
+    const SizeField size({0.2}, {{{0.5, 3, 0}, 0.05}});
+    std::vector<EdgePolyline> out;
+    ASSERT_NO_THROW(out = surface::follow_size_field(in, {}, size));
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(same_bytes(out[0], in[0]));
+}
+
+TEST(SurfaceEdgeSizes, CurvedEdgeKeepsGeomsFinerCutAwayFromTheSource) {
+    // A circle of radius 0.1 cut as geom cuts it for its curvature (97 segments of 0.0065,
+    // far below S = 0.2), with a source by the circle's point at t = 0 asking for 0.001.
+    const double r = 0.1;
+    const int n0 = 97;
+    PlaneFace s = unit_plane();
+    const auto uv = [&](double t) { return Uv{0.5 + r * std::cos(t), 0.5 + r * std::sin(t)}; };
+    s.add_loop({{{7, true}, 0, 2 * pi, uv}});
+    const std::vector<EdgePolyline> in = {cut(7, 3, 3, 0, 2 * pi, n0, [&](double t) { return s.point(uv(t)); })};
+    const std::unordered_map<index_t, surface::EdgeOnFace> on_face = {{7, {&s, {7, true}}}};
+    const SizeField size({0.2}, {{{0.5 + r + 0.005, 0.5, 0}, 0.001}});
+    const std::vector<EdgePolyline> out = surface::follow_size_field(in, on_face, size);
+    ASSERT_EQ(out.size(), 1u);
+    const EdgePolyline& e = out[0];
+    EXPECT_EQ(e.first_vertex, 3u);
+    EXPECT_EQ(e.last_vertex, 3u);
+    EXPECT_TRUE(same_bytes(e.points.front(), in[0].points.front()));
+    EXPECT_TRUE(same_bytes(e.points.back(), in[0].points.back()));
+    EXPECT_GT(e.points.size(), in[0].points.size());  // cut again by the source
+    // New points on the circle itself (evaluated on the face, not on geom's chords: those
+    // are up to 5e-5 inside it).
+    for (const Vec3& p : e.points) EXPECT_NEAR(std::hypot(p.x - 0.5, p.y - 0.5), r, 1e-12);
+    // Nowhere coarser than geom's cut (the chord of a fraction of a segment of the 97-gon is
+    // at most 1 + 2e-4 times that fraction of its length), and fine by the source.
+    const double geom_segment = 2 * r * std::sin(pi / n0);
+    double longest = 0;
+    for (std::size_t k = 0; k + 1 < e.points.size(); ++k) longest = std::max(longest, norm(e.points[k + 1] - e.points[k]));
+    EXPECT_LE(longest, (1 + 2e-4) * geom_segment);
+    expect_equal_shares(in[0], e, size);
+    EXPECT_LE(worst_length_over_midpoint_size(e, size), 1.1);
+    std::printf("  circle: %zu -> %zu segments, longest %.3g (geom's %.3g)\n", in[0].points.size() - 1,
+                e.points.size() - 1, longest, geom_segment);
+}
+
+TEST(SurfaceEdgeSizes, OutputIsDeterministicAndInTheInputOrder) {
+    PlaneFace s = unit_plane();
+    const PlaneEdge l1{{0, 0, 0}, {1, 0, 0}}, l2{{1, 0, 0}, {1, 1, 0}}, l3{{0, 1, 0}, {0, 0, 0}};
+    s.add_loop({{{1, true}, 0, 1, [&](double t) { return l1.uv(t); }},
+                {{2, true}, 0, 1, [&](double t) { return l2.uv(t); }},
+                {{3, true}, 0, 1, [&](double t) { return l3.uv(t); }}});
+    // Edges 3 and 1 pass the source and are cut again; edge 2 is fine as it is.
+    const std::vector<EdgePolyline> in = {cut(3, 4, 1, 0, 1, 5, [&](double t) { return l3.at(t); }),
+                                          cut(1, 1, 2, 0, 1, 5, [&](double t) { return l1.at(t); }),
+                                          cut(2, 2, 3, 0, 1, 5, [&](double t) { return l2.at(t); })};
+    const SizeField size({0.2}, {{{0.03, 0.03, 0}, 0.01}});
+    // The same map built in two insertion orders, one with other edges making it rehash.
+    std::unordered_map<index_t, surface::EdgeOnFace> a, b;
+    for (index_t id : {1u, 2u, 3u}) a.emplace(id, surface::EdgeOnFace{&s, {id, true}});
+    for (index_t id = 1000; id > 10; --id) b.emplace(id, surface::EdgeOnFace{nullptr, {id, true}});
+    for (index_t id : {3u, 2u, 1u}) b.emplace(id, surface::EdgeOnFace{&s, {id, true}});
+    const std::vector<EdgePolyline> one = surface::follow_size_field(in, a, size);
+    const std::vector<EdgePolyline> two = surface::follow_size_field(in, b, size);
+    ASSERT_EQ(one.size(), 3u);
+    ASSERT_EQ(two.size(), 3u);
+    EXPECT_EQ(one[0].edge, 3u);
+    EXPECT_EQ(one[1].edge, 1u);
+    EXPECT_EQ(one[2].edge, 2u);
+    EXPECT_GT(one[0].points.size(), 6u);
+    EXPECT_GT(one[1].points.size(), 6u);
+    EXPECT_TRUE(same_bytes(one[2], in[2]));
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_TRUE(same_bytes(one[k], two[k])) << "edge " << one[k].edge;
+}
+
+TEST(SurfaceEdgeSizes, EdgeToCutAgainWithoutAFaceThrows) {
+    const PlaneEdge line{{0, 0, 0}, {1, 0, 0}};
+    const std::vector<EdgePolyline> in = {cut(5, 1, 2, 0, 1, 5, [&](double t) { return line.at(t); })};
+    const SizeField size({0.2}, {{{0.5, 0, 0}, 0.01}});
+    EXPECT_THROW(surface::follow_size_field(in, {}, size), Error);
+    const std::unordered_map<index_t, surface::EdgeOnFace> no_surface = {{5, {nullptr, {5, true}}}};
+    EXPECT_THROW(surface::follow_size_field(in, no_surface, size), Error);
+}
+
+TEST(SurfaceEdgeSizes, ShortSegmentsBecomeSizeSources) {
+    // h = S = 0.2: a node becomes a source when the mean of its segments is under 0.16.
+    const SizeField size({0.2}, {});
+    // Segments 0.02, 0.02, 0.2, 0.2, 0.15, 0.18: nodes 0-2 (0.02, 0.02, 0.11) are sources,
+    // nodes 3-6 (0.2, 0.175, 0.165, 0.18) are not.
+    EdgePolyline curved{1, 1, 2, {}, {}};
+    for (double x : {0.0, 0.02, 0.04, 0.24, 0.44, 0.59, 0.77}) curved.points.push_back({x, 0, 0});
+    curved.params = {0, 1, 2, 3, 4, 5, 6};
+    // A short edge between two vertices: both ends, its one segment's length.
+    const EdgePolyline short_edge{2, 2, 3, {{0.77, 0, 0}, {0.77, 0.15, 0}}, {0, 1}};
+    const std::vector<EdgePolyline> edges = {curved, short_edge};
+    std::vector<SizeSource> out = {{{9, 9, 9}, 1.0}};  // appended to, not replaced
+    surface::add_short_edge_sources(edges, size, out);
+    ASSERT_EQ(out.size(), 6u);
+    EXPECT_EQ(out[0].size, 1.0);
+    const Vec3 at[5] = {curved.points[0], curved.points[1], curved.points[2], short_edge.points[0], short_edge.points[1]};
+    const double want[5] = {0.02, 0.02, 0.11, 0.15, 0.15};
+    for (int k = 0; k < 5; ++k) {
+        EXPECT_TRUE(same_bytes(out[k + 1].point, at[k])) << "source " << k;
+        EXPECT_NEAR(out[k + 1].size, want[k], 1e-12) << "source " << k;
+    }
+}
+
+TEST(SurfaceEdgeSizes, ShortSegmentsAreMeasuredAgainstHAtTheNode) {
+    // Even segments of 0.1 along x; h = 0.06 + 0.25 x (to S = 0.2): 0.1 < 0.8 h from x = 0.3.
+    const SizeField size({0.2}, {{{0, 0, 0}, 0.06}});
+    const EdgePolyline e = cut(1, 1, 2, 0, 1, 10, [](double t) { return Vec3{t, 0, 0}; });
+    std::vector<SizeSource> out;
+    surface::add_short_edge_sources({&e, 1}, size, out);
+    ASSERT_EQ(out.size(), 8u);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        EXPECT_TRUE(same_bytes(out[k].point, e.points[k + 3])) << "source " << k;
+        EXPECT_NEAR(out[k].size, 0.1, 1e-12);
+    }
 }
 
 }  // namespace

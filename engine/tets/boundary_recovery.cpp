@@ -126,6 +126,18 @@ private:
                 for (int k = 0; k < 3; ++k) e[k] = m_.point(p)[k] + w * (m_.point(q)[k] - m_.point(p)[k]);
                 cands.push_back(e);
             }
+            // Closer still to the midpoint: when the edge lies in the plane of a flat front (the
+            // other diagonal of two front triangles), points on the edge are ruled out above and
+            // the ring's far points (a box corner) leave only a thin kernel around the edge.
+            for (double t : {0.02, 0.005})
+                for (index_t r : ring) {
+                    std::array<double, 3> e;
+                    for (int k = 0; k < 3; ++k) {
+                        const double mid = 0.5 * (m_.point(p)[k] + m_.point(q)[k]);
+                        e[k] = mid + t * (m_.point(r)[k] - mid);
+                    }
+                    cands.push_back(e);
+                }
             for (const auto& cand : cands) {
                 const double* s = cand.data();
                 if (point_on_target(m_, g, s)) continue;

@@ -1,7 +1,9 @@
 #pragma once
 // Smoothing of the free points of a TetDomain (paper §5): a point moves towards the centroid
-// of its neighbours, or towards the position that makes its worst tet regular, and the move is
-// kept only when the worst tet around the point gets better and none inverts (exact orient3d).
+// of its neighbours, its optimal-Delaunay position (the volume-weighted mean of its tets'
+// circumcentres) or the position that makes its worst tet regular. A move is kept when the
+// worst tet around the point gets better, or else when the sum of its tets' collapses does
+// and the worst stays above min(its value, 0.45); never when a tet inverts (exact orient3d).
 // Front points [0, front_points) never move; the topology does not change.
 //
 // Parallel and deterministic: points are greedily coloured in index order so that no two
@@ -19,7 +21,8 @@ struct SmoothingCounts {
 };
 
 // `sweeps` sweeps over the free points whose worst tet is below `threshold`; a move must raise
-// the worst collapse around the point by more than min_gain. The domain has no free slots.
+// the worst collapse around the point by more than min_gain, or the sum of the collapses around
+// it by more than min_gain per tet. The domain has no free slots.
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain);
 
 }  // namespace tubemesh::tets

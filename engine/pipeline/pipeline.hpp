@@ -103,7 +103,7 @@ struct MeshOptions {
     // 0.98154 h, search radius 1.5 h, 45 degrees, distance 0.65 h, 5 try nodes, 8 drawback
     // rounds, quality floor 0.45).
     PyramidOptions pyramids;
-    // Tet step options (engine/tets/tet_step.hpp and the headers it names: gradation 1.4,
+    // Tet step options (engine/tets/tet_step.hpp and the headers it names: gradation 1.6,
     // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5). far_size = 0 (the
     // default) takes S; threads and partitions come from the two fields below.
     tets::TetStepOptions tets;

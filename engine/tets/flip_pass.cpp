@@ -5,7 +5,6 @@
 #include <limits>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "engine/tets/tet_flips.hpp"
@@ -21,6 +20,11 @@ struct Candidate {
     index_t tet;
     std::array<index_t, 4> vertices;  // to tell whether the slot still holds this tet
     double collapse;
+    std::uint32_t planned = 0;  // round whose start the footprint and plan describe (0: never)
+    bool has_plan = false;
+    FlipPlan plan;
+    std::vector<index_t> reads;   // every tet whose vertex row or neighbour codes planning read
+    std::vector<index_t> claims;  // reads + the tets the plan writes (its old tets' neighbours)
 };
 
 constexpr std::array<std::array<int, 2>, 6> kTetEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
@@ -36,7 +40,10 @@ bool best_flip(const TetDomain& dom, index_t t, double min_gain, int max_ring, F
             found = true;
         }
     };
-    for (const auto& e : kTetEdges) consider(plan_edge_removal(dom, t, e[0], e[1], max_ring, plan));
+    for (const auto& e : kTetEdges) {
+        const double beat = found ? best.new_min : -std::numeric_limits<double>::infinity();
+        consider(plan_edge_removal(dom, t, e[0], e[1], max_ring, plan, beat, min_gain));
+    }
     for (int f = 0; f < 4; ++f) consider(plan_flip23(dom, t, f, plan));
     return found;
 }
@@ -47,20 +54,57 @@ bool still_there(const TetDomain& dom, const Candidate& c) {
     return std::equal(c.vertices.begin(), c.vertices.end(), v);
 }
 
-std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold) {
+// The tets planning reads: t, its face neighbours, and the tets each edge-shell walk visits
+// (edge_shell stops at the same tet for the same mesh, so a walk that is cut short by the
+// front or by max_ring reads only the tets it stored).
+void planning_reads(const TetDomain& dom, index_t t, int max_ring, std::vector<index_t>& reads) {
+    reads.clear();
+    reads.push_back(t);
+    for (index_t f = 0; f < 4; ++f) {
+        const index_t n = dom.tets.neighbour(4 * t + f);
+        if (n != delaunay::kNoAdjacent) reads.push_back(n >> 2);
+    }
+    EdgeShell shell;
+    for (const auto& e : kTetEdges) {
+        edge_shell(dom, t, e[0], e[1], std::min(max_ring, EdgeShell::kMaxSize), shell);
+        for (int i = 1; i < shell.size; ++i) reads.push_back(shell.tets[i]);
+    }
+}
+
+// reads + the tets whose neighbour codes applying the plan rewrites.
+void plan_claims(const TetDomain& dom, const FlipPlan& plan, const std::vector<index_t>& reads,
+                 std::vector<index_t>& claims) {
+    claims = reads;
+    for (int i = 0; i < plan.old_count; ++i) {
+        const index_t t = plan.old_tets[i];
+        claims.push_back(t);
+        for (index_t f = 0; f < 4; ++f) {
+            const index_t n = dom.tets.neighbour(4 * t + f);
+            if (n != delaunay::kNoAdjacent) claims.push_back(n >> 2);
+        }
+    }
+}
+
+std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const std::vector<std::uint8_t>* active) {
     const index_t n = dom.tets.size();
     std::vector<double> q(n);
     tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
         for (index_t t = r.begin(); t != r.end(); ++t) {
             const index_t* v = dom.tets.vertex(t);
-            q[t] = v[0] == kFreeSlot ? std::numeric_limits<double>::infinity() : collapse_of(dom, v[0], v[1], v[2], v[3]);
+            const bool wanted = v[0] != kFreeSlot &&
+                                (!active || (*active)[v[0]] || (*active)[v[1]] || (*active)[v[2]] || (*active)[v[3]]);
+            q[t] = wanted ? collapse_of(dom, v[0], v[1], v[2], v[3]) : std::numeric_limits<double>::infinity();
         }
     });
     std::vector<Candidate> out;
     for (index_t t = 0; t < n; ++t) {
         if (!(q[t] < threshold)) continue;
         const index_t* v = dom.tets.vertex(t);
-        out.push_back({t, {v[0], v[1], v[2], v[3]}, q[t]});
+        Candidate c;
+        c.tet = t;
+        c.vertices = {v[0], v[1], v[2], v[3]};
+        c.collapse = q[t];
+        out.push_back(std::move(c));
     }
     std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
         return a.collapse != b.collapse ? a.collapse < b.collapse : a.tet < b.tet;
@@ -70,49 +114,52 @@ std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold) {
 
 }  // namespace
 
-FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring) {
+FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring,
+                           const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed) {
     FlipSweepCounts counts;
-    std::vector<Candidate> pending = bad_tets(dom, threshold);
-    std::vector<std::vector<index_t>> footprint;
+    std::vector<Candidate> cands = bad_tets(dom, threshold, active);
+    std::vector<std::size_t> pending(cands.size());
+    for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = i;
     std::vector<std::uint8_t> alive;
     std::vector<std::uint32_t> claimed;  // round stamp of the round that took the tet
-    std::vector<std::size_t> taken;
-    std::vector<Candidate> waiting;
-    std::vector<int> outcome;
-    tbb::enumerable_thread_specific<std::vector<index_t>> star_scratch;
+    std::vector<std::uint32_t> written;  // last round whose flips rewrote the slot (0: none)
+    std::vector<std::size_t> taken, waiting;
+    std::vector<std::uint8_t> applied;
     const index_t spare_per_move = static_cast<index_t>(max_extra_slots(max_edge_ring));
 
     while (!pending.empty()) {
         ++counts.rounds;
         const auto stamp = static_cast<std::uint32_t>(counts.rounds);
-        footprint.resize(pending.size());
+        written.resize(dom.tets.size(), 0);
         alive.assign(pending.size(), 0);
+        // A plan stays valid, and the best one, while no flip rewrote a tet it read.
         tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t i) {
-            const Candidate& c = pending[i];
-            if (!still_there(dom, c)) return;
-            alive[i] = 1;
-            auto& star = star_scratch.local();
-            auto& fp = footprint[i];
-            fp.clear();
-            for (index_t p : c.vertices) {
-                vertex_star(dom, c.tet, p, star);
-                fp.insert(fp.end(), star.begin(), star.end());
+            Candidate& c = cands[pending[i]];
+            const bool valid = c.planned != 0 && std::none_of(c.reads.begin(), c.reads.end(),
+                                                              [&](index_t t) { return written[t] >= c.planned; });
+            if (!valid) {
+                if (!still_there(dom, c)) return;
+                planning_reads(dom, c.tet, max_edge_ring, c.reads);
+                c.planned = stamp;
+                c.has_plan = best_flip(dom, c.tet, min_gain, max_edge_ring, c.plan);
+                if (c.has_plan) plan_claims(dom, c.plan, c.reads, c.claims);
             }
+            alive[i] = c.has_plan;
         });
 
-        // Worst first; a candidate whose stars meet a taken one waits for the next round.
+        // Worst first; a candidate whose claims meet a taken one's waits for the next round.
         claimed.resize(dom.tets.size(), 0);
         taken.clear();
         waiting.clear();
         for (std::size_t i = 0; i < pending.size(); ++i) {
             if (!alive[i]) continue;
-            const auto& fp = footprint[i];
+            const auto& fp = cands[pending[i]].claims;
             if (std::any_of(fp.begin(), fp.end(), [&](index_t t) { return claimed[t] == stamp; })) {
                 waiting.push_back(pending[i]);
                 continue;
             }
             for (index_t t : fp) claimed[t] = stamp;
-            taken.push_back(i);
+            taken.push_back(pending[i]);
         }
 
         const index_t base = dom.tets.size();
@@ -121,18 +168,18 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         dom.tets.set_size(base + static_cast<index_t>(spare_total));
         for (index_t s = base; s < dom.tets.size(); ++s) std::fill_n(dom.tets.vertex(s), 4, kFreeSlot);
 
-        outcome.assign(taken.size(), -1);
         tbb::parallel_for(std::size_t{0}, taken.size(), [&](std::size_t k) {
-            FlipPlan plan;
-            if (!best_flip(dom, pending[taken[k]].tet, min_gain, max_edge_ring, plan)) return;
             std::array<index_t, FlipPlan::kMaxNew> spare{};
             for (index_t s = 0; s < spare_per_move; ++s) spare[s] = base + static_cast<index_t>(k) * spare_per_move + s;
-            apply_flip(dom, plan, {spare.data(), spare_per_move});
-            outcome[k] = static_cast<int>(plan.kind);
+            apply_flip(dom, cands[taken[k]].plan, {spare.data(), spare_per_move});
         });
-        for (int o : outcome) {
-            if (o < 0) continue;
-            switch (static_cast<FlipKind>(o)) {
+        for (std::size_t k : taken) {
+            const FlipPlan& plan = cands[k].plan;
+            const auto& cl = cands[k].claims;
+            for (std::size_t i = cands[k].reads.size(); i < cl.size(); ++i) written[cl[i]] = stamp;
+            for (int j = 0; j < plan.new_count; ++j)
+                for (index_t p : plan.new_tets[j]) changed[p] = 1;
+            switch (plan.kind) {
                 case FlipKind::Flip23: ++counts.flips23; break;
                 case FlipKind::Flip32: ++counts.flips32; break;
                 case FlipKind::Flip44: ++counts.flips44; break;

@@ -3,12 +3,16 @@
 // threshold, worst first, gets the flip (2-3 on one of its faces, or removal of one of its
 // edges) that best raises the smallest collapse of the tets it replaces.
 //
-// Parallel and deterministic: a move only touches tets that share a vertex with the tet it
-// improves (the stars of its four vertices; every replaced tet and every tet whose neighbour
-// code changes is there). Each round takes, in worst-first order, the candidates whose stars
-// meet no star taken before in the round, and runs them with tbb::parallel_for, each writing
-// its new tets into slots reserved for it in that order; the others wait for the next round.
+// Parallel and deterministic. Planning a candidate reads only its tet, the tet's face
+// neighbours and the shells of its six edges (its reads); applying the plan writes only the
+// old tets and their face neighbours' codes. Each round plans, in parallel, every candidate
+// whose reads a flip wrote since it was last planned (a candidate with no improving flip is
+// dropped: later passes come back to it if something near it changes), then takes, in
+// worst-first order, the candidates whose reads and writes meet none taken before in the
+// round, and applies them with tbb::parallel_for, each writing its new tets into slots
+// reserved for it in that order; the others wait, keeping their plans while still valid.
 #include <cstdint>
+#include <vector>
 
 #include "engine/tets/tet_domain.hpp"
 
@@ -20,7 +24,10 @@ struct FlipSweepCounts {
     std::uint64_t total() const { return flips23 + flips32 + flips44 + edge_removals; }
 };
 
-// Leaves no free slots behind.
-FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring);
+// `active` (one flag per point, or nullptr for all points): only tets with an active vertex
+// are attacked; later passes use it to revisit only what changed. Every vertex of a tet a
+// flip creates gets changed[p] = 1 (changed has one flag per point). Leaves no free slots.
+FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring,
+                           const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed);
 
 }  // namespace tubemesh::tets

@@ -24,7 +24,9 @@ struct Measure {
 };
 
 // Collapses in parallel, summed serially in tet order: the mean does not depend on threads.
-Measure measure(const TetDomain& dom, double threshold) {
+// With `poor`, also flags the points of the tets below poor_below.
+Measure measure(const TetDomain& dom, double threshold, std::vector<std::uint8_t>* poor = nullptr,
+                double poor_below = 0) {
     const index_t n = dom.tets.size();
     std::vector<double> q(n);
     tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
@@ -37,7 +39,11 @@ Measure measure(const TetDomain& dom, double threshold) {
     if (n == 0) return m;
     m.min = std::numeric_limits<double>::infinity();
     double sum = 0;
-    for (double x : q) {
+    if (poor) std::fill(poor->begin(), poor->end(), 0);
+    for (index_t t = 0; t < n; ++t) {
+        const double x = q[t];
+        if (poor && x < poor_below)
+            for (int i = 0; i < 4; ++i) (*poor)[dom.tets.vertex(t)[i]] = 1;
         m.min = std::min(m.min, x);
         sum += x;
         m.below += x < threshold;
@@ -55,7 +61,25 @@ void check(const OptimiseOptions& o) {
     if (!(o.min_gain >= 0)) fail("min_gain must be 0 or more");
     if (!(o.flip_threshold <= 1.0 && o.flip_threshold >= 0.0)) fail("flip_threshold must lie in [0, 1]");
     if (!(o.smoothing_threshold >= 0.0)) fail("smoothing_threshold must be 0 or more");
+    if (!(o.min_mean_gain >= 0.0)) fail("min_mean_gain must be 0 or more");
 }
+
+// The points of every tet with a changed point: the points whose star (and so whose flips and
+// moves) a change can have touched. Clears `changed`.
+void points_near(const TetDomain& dom, std::vector<std::uint8_t>& changed, std::vector<std::uint8_t>& near) {
+    near.assign(changed.size(), 0);
+    const index_t n = dom.tets.size();
+    for (index_t t = 0; t < n; ++t) {
+        const index_t* v = dom.tets.vertex(t);
+        if (changed[v[0]] || changed[v[1]] || changed[v[2]] || changed[v[3]])
+            for (int i = 0; i < 4; ++i) near[v[i]] = 1;
+    }
+    std::fill(changed.begin(), changed.end(), 0);
+}
+
+// Once a pass gains little on the mean, later passes only work near the tets below this: the
+// ones that can still decide the minimum.
+constexpr double kFocusBelow = 0.35;
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -69,10 +93,29 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
     s.min_collapse_before = before.min;
     s.mean_collapse_before = before.mean;
     s.below_threshold_before = before.below;
+    // Work lists: after the first pass, flips and moves are only tried near what changed since
+    // the same kind of step last ran; elsewhere they would meet the same tets again.
+    const std::size_t points = dom.point_count();
+    std::vector<std::uint8_t> changed_for_flips(points, 0), changed_for_smoothing(points, 0), changed(points, 0);
+    std::vector<std::uint8_t> near, poor(points, 0), poor_ring;
+    double last_mean = before.mean;
+    bool focused = false;
+    const auto focus = [&] {
+        if (focused)
+            for (std::size_t p = 0; p < points; ++p) near[p] &= poor_ring[p];
+    };
     for (int pass = 0; pass < o.passes; ++pass) {
         ++s.passes;
         auto t0 = Clock::now();
-        const FlipSweepCounts f = flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring);
+        if (pass > 0) {
+            points_near(dom, changed_for_flips, near);
+            focus();
+        }
+        std::fill(changed.begin(), changed.end(), 0);
+        const FlipSweepCounts f =
+            flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, pass > 0 ? &near : nullptr, changed);
+        for (std::size_t p = 0; p < points; ++p)
+            if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_flips += since(t0);
         s.flips23 += f.flips23;
         s.flips32 += f.flips32;
@@ -80,11 +123,27 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         s.edge_removals += f.edge_removals;
         s.flip_rounds += f.rounds;
         t0 = Clock::now();
-        const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain);
+        if (pass > 0) {
+            points_near(dom, changed_for_smoothing, near);
+            focus();
+        }
+        std::fill(changed.begin(), changed.end(), 0);
+        const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain,
+                                                pass > 0 ? &near : nullptr, changed);
+        for (std::size_t p = 0; p < points; ++p)
+            if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_smoothing += since(t0);
         s.moves += m.moves;
         s.colours = std::max(s.colours, m.colours);
         if (f.total() == 0 && m.moves == 0) break;
+        // Late passes keep nudging points for ever smaller gains of the mean: when one gains
+        // less than min_mean_gain of it, the next ones only work near the poor tets, until one
+        // changes nothing or the passes run out (sums are serial, so this is deterministic).
+        const Measure now = measure(dom, o.flip_threshold, &poor, kFocusBelow);
+        if (now.mean - last_mean < o.min_mean_gain * last_mean) focused = true;
+        // The poor tets' points and their neighbours: moving a neighbour can free a poor tet.
+        if (focused) points_near(dom, poor, poor_ring);
+        last_mean = now.mean;
     }
     const Measure after = measure(dom, o.flip_threshold);
     s.tets_after = dom.tets.size();

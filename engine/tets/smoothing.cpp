@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "engine/mesh/vec3_ops.hpp"
@@ -37,16 +38,15 @@ Incidence build_incidence(const TetDomain& dom) {
     return inc;
 }
 
-// Greedy colouring in point order: a colour never holds two points of one tet.
-std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Incidence& inc) {
-    const index_t points = dom.point_count();
-    std::vector<std::uint32_t> colour(points, kNoIndex);
+// Greedy colouring of `points` (increasing) in that order: a colour never holds two points of
+// one tet. `colour` has one entry per point, kNoIndex on entry and again on return.
+std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Incidence& inc,
+                                                const std::vector<index_t>& points,
+                                                std::vector<std::uint32_t>& colour) {
     std::vector<index_t> seen;  // seen[c] == p: colour c is taken by a neighbour of p
     std::vector<std::vector<index_t>> classes;
-    for (index_t p = dom.front_points; p < points; ++p) {
-        const auto star = inc.of(p);
-        if (star.empty()) continue;
-        for (index_t t : star)
+    for (index_t p : points) {
+        for (index_t t : inc.of(p))
             for (index_t i = 0; i < 4; ++i) {
                 const index_t q = dom.tets.vertex(t)[i];
                 if (q != p && colour[q] != kNoIndex) seen[colour[q]] = p;
@@ -60,6 +60,7 @@ std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Inci
         colour[p] = c;
         classes[c].push_back(p);
     }
+    for (index_t p : points) colour[p] = kNoIndex;
     return classes;
 }
 
@@ -70,7 +71,11 @@ struct StarQuality {
     double sum = 0;
 };
 
-StarQuality star_quality(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3* x) {
+// Stops (returning what it has) at the first tet at or below `give_up`: the caller rejects
+// such a position anyway, and most rejected trials fail on the star's old worst tet, which
+// try_move puts first.
+StarQuality star_quality(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3* x,
+                         double give_up = -std::numeric_limits<double>::infinity()) {
     StarQuality s;
     for (index_t t : star) {
         const index_t* v = dom.tets.vertex(t);
@@ -79,6 +84,7 @@ StarQuality star_quality(const TetDomain& dom, index_t p, std::span<const index_
         const double q = tet_collapse(c);
         s.worst = std::min(s.worst, q);
         s.sum += q;
+        if (q <= give_up) break;
     }
     return s;
 }
@@ -137,19 +143,30 @@ constexpr double kLaplacianFloor = 0.45;
 // its worst tet above min(its value, kLaplacianFloor). Worst-tet moves alone leave the bulk of
 // the mesh where refinement put it; the second kind (the paper's Laplacian smoothing) is what
 // raises the mean.
-bool try_move(TetDomain& dom, index_t p, std::span<const index_t> star, double threshold, double min_gain) {
+// Points whose worst tet is below this get finer steps and extra sweeps (polish): the few
+// worst tets of the mesh decide its minimum, the bulk only the mean.
+constexpr double kPolishBelow = 0.35;
+
+bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, double threshold, double min_gain,
+              std::vector<index_t>& star, double& worst_before, bool polish) {
     StarQuality now;
-    index_t worst_tet = star[0];
-    for (index_t t : star) {
-        const index_t* v = dom.tets.vertex(t);
+    std::size_t worst_at = 0;
+    for (std::size_t k = 0; k < incident.size(); ++k) {
+        const index_t* v = dom.tets.vertex(incident[k]);
         const double q = collapse_of(dom, v[0], v[1], v[2], v[3]);
         now.sum += q;
         if (q < now.worst) {
             now.worst = q;
-            worst_tet = t;
+            worst_at = k;
         }
     }
+    worst_before = now.worst;
     if (!(now.worst < threshold)) return false;
+    // The old worst tet first: the trial that does not beat it gives up at once. Only the
+    // order of summation changes (a sum never decides more than min_gain apart).
+    star.assign(incident.begin(), incident.end());
+    std::swap(star[0], star[worst_at]);
+    const index_t worst_tet = star[0];
 
     const Vec3 here = point_vec(dom, p);
     Vec3 centroid{0, 0, 0};
@@ -160,8 +177,21 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> star, double t
         }
     centroid = (1.0 / (3.0 * static_cast<double>(star.size()))) * centroid;
     const Vec3 odt = odt_target(dom, star, centroid);
-    const std::array<Vec3, 3> targets{centroid, odt, regular_apex(dom, worst_tet, p)};
-    constexpr double kSteps[] = {1.0, 0.5, 0.25, 0.125};
+    // In a polish sweep a poor star also aims at the regular apices of its other poor tets (up
+    // to 4): the worst one's apex alone often only trades it for the next.
+    std::array<Vec3, 7> target_store{centroid, odt, regular_apex(dom, worst_tet, p)};
+    std::size_t target_count = 3;
+    if (polish && now.worst < kPolishBelow)
+        for (std::size_t k = 1; k < star.size() && target_count < target_store.size(); ++k) {
+            const index_t* v = dom.tets.vertex(star[k]);
+            if (collapse_of(dom, v[0], v[1], v[2], v[3]) < kPolishBelow)
+                target_store[target_count++] = regular_apex(dom, star[k], p);
+        }
+    const std::span<const Vec3> targets(target_store.data(), target_count);
+    // Steps of 1/8 and 1/16 rarely win for a fair star and cost more trials (paper-ex1,
+    // 2026-12-02); a poor star gets them.
+    constexpr double kStepsAll[] = {1.0, 0.5, 0.25, 0.125, 0.0625};
+    const std::span<const double> kSteps(kStepsAll, now.worst < kPolishBelow ? 5 : 3);
 
     double best = now.worst + min_gain;
     Vec3 best_x = here;
@@ -169,7 +199,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> star, double t
     for (const Vec3& target : targets) {
         for (double step : kSteps) {
             const Vec3 x = here + step * (target - here);
-            const double q = star_quality(dom, p, star, &x).worst;
+            const double q = star_quality(dom, p, star, &x, best).worst;
             if (q > best) {
                 best = q;
                 best_x = x;
@@ -179,11 +209,14 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> star, double t
     }
     if (!improved) {
         double best_sum = now.sum + min_gain * static_cast<double>(star.size());
+        const double floor = std::min(now.worst, kLaplacianFloor);
+        // Mean-raising moves of a fair star: the two longer steps (the short one seldom wins).
+        const std::span<const double> sum_steps = now.worst < kPolishBelow ? kSteps : kSteps.first(2);
         for (const Vec3& target : {odt, centroid})
-            for (double step : kSteps) {
+            for (double step : sum_steps) {
                 const Vec3 x = here + step * (target - here);
-                const StarQuality q = star_quality(dom, p, star, &x);
-                if (q.worst >= std::min(now.worst, kLaplacianFloor) && q.sum > best_sum) {
+                const StarQuality q = star_quality(dom, p, star, &x, std::nextafter(floor, -1.0));
+                if (q.worst >= floor && q.sum > best_sum) {
                     best_sum = q.sum;
                     best_x = x;
                     improved = true;
@@ -200,25 +233,56 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> star, double t
 
 }  // namespace
 
-SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain) {
+SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain,
+                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed) {
     SmoothingCounts counts;
     const Incidence inc = build_incidence(dom);
-    const auto classes = colour_points(dom, inc);
-    counts.colours = classes.size();
-    std::vector<std::uint8_t> moved;
-    for (int sweep = 0; sweep < sweeps; ++sweep) {
-        std::uint64_t moves = 0;
-        for (const auto& points : classes) {
-            moved.assign(points.size(), 0);
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 64),
+    const index_t points = dom.point_count();
+    std::vector<index_t> todo;
+    for (index_t p = dom.front_points; p < points; ++p)
+        if (!inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
+    std::vector<std::uint32_t> colour(points, kNoIndex);
+    std::vector<std::uint8_t> moved, again(points, 0);
+    std::vector<index_t> moved_points;
+    std::vector<double> worst;
+    tbb::enumerable_thread_specific<std::vector<index_t>> star_scratch;
+    // `sweeps` sweeps, then up to kPolishSweeps over the points near a moved poor star.
+    constexpr int kPolishSweeps = 3;
+    const int total_sweeps = sweeps > 0 ? sweeps + kPolishSweeps : 0;
+    for (int sweep = 0; sweep < total_sweeps && !todo.empty(); ++sweep) {
+        const bool polish = sweep >= sweeps;
+        const double below = polish ? std::min(threshold, kPolishBelow) : threshold;
+        const auto classes = colour_points(dom, inc, todo, colour);
+        counts.colours = std::max<std::uint64_t>(counts.colours, classes.size());
+        moved_points.clear();
+        for (const auto& pts : classes) {
+            moved.assign(pts.size(), 0);
+            worst.assign(pts.size(), 0.0);
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 16),
                               [&](const tbb::blocked_range<std::size_t>& r) {
+                                  auto& star = star_scratch.local();
                                   for (std::size_t i = r.begin(); i != r.end(); ++i)
-                                      moved[i] = try_move(dom, points[i], inc.of(points[i]), threshold, min_gain);
+                                      moved[i] = try_move(dom, pts[i], inc.of(pts[i]), below, min_gain, star,
+                                                          worst[i], polish);
                               });
-            for (auto m : moved) moves += m;
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                if (!moved[i]) continue;
+                moved_points.push_back(pts[i]);
+                changed[pts[i]] = 1;
+                // Later sweeps: the free points of the stars of the points that moved (only
+                // of poor stars once the polish sweeps come).
+                if (sweep + 1 < sweeps || worst[i] < kPolishBelow)
+                    for (index_t t : inc.of(pts[i]))
+                        for (index_t k = 0; k < 4; ++k) again[dom.tets.vertex(t)[k]] = 1;
+            }
         }
-        counts.moves += moves;
-        if (moves == 0) break;
+        counts.moves += moved_points.size();
+        todo.clear();
+        for (index_t p = dom.front_points; p < points; ++p)
+            if (again[p]) {
+                todo.push_back(p);
+                again[p] = 0;
+            }
     }
     return counts;
 }

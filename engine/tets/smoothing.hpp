@@ -10,6 +10,7 @@
 // points of a colour share a tet; the points of one colour move at once (tbb::parallel_for),
 // each reading only its own tets, whose other points do not move in that colour.
 #include <cstdint>
+#include <vector>
 
 #include "engine/tets/tet_domain.hpp"
 
@@ -22,7 +23,13 @@ struct SmoothingCounts {
 
 // `sweeps` sweeps over the free points whose worst tet is below `threshold`; a move must raise
 // the worst collapse around the point by more than min_gain, or the sum of the collapses around
-// it by more than min_gain per tet. The domain has no free slots.
-SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain);
+// it by more than min_gain per tet. The first sweep tries the points with active[p] set (all
+// when active is nullptr), each later one only the points with a moved point in their star
+// (the others would meet the same star again). After them (when sweeps > 0) come up to three
+// polish sweeps over the points near a moved point whose worst tet was below 0.35, with finer
+// steps and more targets: those few stars decide the minimum. A moved point gets
+// changed[p] = 1 (one flag per point). The domain has no free slots.
+SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain,
+                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed);
 
 }  // namespace tubemesh::tets

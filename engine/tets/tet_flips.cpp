@@ -65,11 +65,16 @@ bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan) {
     return plan.new_min > 0 && all_positive(dom, plan);
 }
 
-bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan) {
+bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan,
+                       double must_exceed, double gain) {
     EdgeShell shell;
     if (!edge_shell(dom, t, la, lb, std::min(max_ring, EdgeShell::kMaxSize), shell)) return false;
     const int n = shell.size;
     if (n < 3) return false;
+    const double old_min = min_collapse_of_tets(dom, shell.tets.data(), n);
+    // Triangulations at or below the bound are of no use to the caller: the search skips them
+    // (a sub-polygon no better than the bound keeps the bound as its value, which then loses).
+    const double bound = std::max(must_exceed, old_min + gain);
     const auto& p = shell.ring;
     constexpr int N = EdgeShell::kMaxSize;
     // best[i][j]: the largest smallest collapse over the triangulations of the sub-polygon
@@ -81,7 +86,7 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
     for (int gap = 2; gap < n; ++gap) {
         for (int i = 0; i + gap < n; ++i) {
             const int j = i + gap;
-            double q_best = -std::numeric_limits<double>::infinity();
+            double q_best = bound;
             int k_best = i + 1;
             for (int k = i + 1; k < j; ++k) {
                 double q = std::min(best[i][k], best[k][j]);
@@ -101,8 +106,9 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
     plan.kind = n == 3 ? FlipKind::Flip32 : n == 4 ? FlipKind::Flip44 : FlipKind::EdgeRemoval;
     plan.old_count = n;
     std::copy_n(shell.tets.begin(), n, plan.old_tets.begin());
-    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), n);
+    plan.old_min = old_min;
     plan.new_min = best[0][n - 1];
+    if (!(plan.new_min > bound)) return false;
     plan.new_count = 0;
     std::array<std::array<int, 2>, N> stack{};
     int top = 0;

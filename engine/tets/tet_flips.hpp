@@ -14,6 +14,7 @@
 // is kept as it is.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include "engine/core/types.hpp"
@@ -45,7 +46,11 @@ bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan);
 // Plans the removal of the edge between local vertices la and lb of tet t, whose shell may
 // hold at most max_ring tets (3..EdgeShell::kMaxSize). False when the shell is open or too
 // large, or when no triangulation of the ring gives positively oriented tets (exact test).
-bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan);
+// Also false when the best triangulation's smallest collapse is not above both must_exceed and
+// the old tets' smallest collapse + gain (defaults: no such bound); the bound prunes the search.
+bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan,
+                       double must_exceed = -std::numeric_limits<double>::infinity(),
+                       double gain = -std::numeric_limits<double>::infinity());
 
 // Largest number of spare slots a plan with rings up to max_ring tets can need.
 inline int max_extra_slots(int max_ring) { return max_ring - 4 > 1 ? max_ring - 4 : 1; }

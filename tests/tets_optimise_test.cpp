@@ -17,6 +17,7 @@
 #include "engine/tets/optimise.hpp"
 #include "engine/tets/tet_flips.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
+#include "tests/support/tet_domain_volume.hpp"
 
 namespace {
 
@@ -84,20 +85,7 @@ std::set<Tri> front_set(const TetDomain& d) {
     return out;
 }
 
-double volume(const TetDomain& d) {
-    double v = 0;
-    for (index_t t = 0; t < d.tets.size(); ++t) {
-        const index_t* q = d.tets.vertex(t);
-        const double* a = d.point(q[0]);
-        double e[3][3];
-        for (int k = 0; k < 3; ++k)
-            for (int c = 0; c < 3; ++c) e[k][c] = d.point(q[k + 1])[c] - a[c];
-        v += (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-              e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-             6.0;
-    }
-    return v;
-}
+using tubemesh::testing::domain_volume;
 
 // Positive orientation, no free slot, symmetric adjacency across the same three points.
 void expect_valid(const TetDomain& d) {
@@ -145,7 +133,7 @@ std::multiset<std::array<index_t, 4>> tet_sets(const TetDomain& d) {
 TEST(test_tets_optimise, Flip23ThenFlip32RoundTrip) {
     TetDomain d = sphere_domain(60, 80, 1);
     const auto before = tet_sets(d);
-    const double vol = volume(d);
+    const double vol = domain_volume(d);
     FlipPlan plan;
     index_t t = 0;
     int f = 0;
@@ -158,7 +146,7 @@ TEST(test_tets_optimise, Flip23ThenFlip32RoundTrip) {
     compact_tets(d);
     expect_valid(d);
     EXPECT_EQ(d.tets.size(), before.size() + 1);
-    EXPECT_NEAR(volume(d), vol, 1e-12 * vol);
+    EXPECT_NEAR(domain_volume(d), vol, 1e-12 * vol);
     EXPECT_EQ(boundary_faces(d), front_set(d));
     // The new edge d-e is shared by the three new tets: removing it is the 3-2 flip back.
     const index_t dv = plan.new_tets[0][3], ev = plan.new_tets[0][2];
@@ -190,14 +178,14 @@ TEST(test_tets_optimise, EdgeRemovalOnRingsOfFiveToSeven) {
                 if (!plan_edge_removal(d, t, a, b, 7, plan)) continue;
                 sizes_done.insert(shell.size);
                 const index_t tets = d.tets.size();
-                const double vol = volume(d);
+                const double vol = domain_volume(d);
                 EXPECT_EQ(plan.kind, FlipKind::EdgeRemoval);
                 EXPECT_EQ(plan.new_count, 2 * shell.size - 4);
                 apply_flip_appending(d, plan);
                 compact_tets(d);
                 expect_valid(d);
                 EXPECT_EQ(d.tets.size(), tets + static_cast<index_t>(shell.size - 4));
-                EXPECT_NEAR(volume(d), vol, 1e-12 * vol);
+                EXPECT_NEAR(domain_volume(d), vol, 1e-12 * vol);
                 EXPECT_EQ(boundary_faces(d), front_set(d));
                 // The edge is gone: no tet holds both endpoints.
                 for (index_t u = 0; u < d.tets.size(); ++u)
@@ -214,12 +202,12 @@ TEST(test_tets_optimise, OptimiseImprovesAndKeepsTheDomain) {
     const auto front = front_set(d);
     ASSERT_EQ(boundary_faces(d), front);
     const std::vector<double> front_xyz(d.xyz.begin(), d.xyz.begin() + 3 * d.front_points);
-    const double vol = volume(d);
+    const double vol = domain_volume(d);
     const OptimiseStats s = optimise(d);
     expect_valid(d);
     EXPECT_EQ(boundary_faces(d), front);
     EXPECT_TRUE(std::equal(front_xyz.begin(), front_xyz.end(), d.xyz.begin()));
-    EXPECT_NEAR(volume(d), vol, 1e-9 * vol);
+    EXPECT_NEAR(domain_volume(d), vol, 1e-9 * vol);
     EXPECT_EQ(s.tets_after, d.tets.size());
     EXPECT_NEAR(s.min_collapse_after, min_collapse(d), 1e-15);
     EXPECT_GT(s.min_collapse_after, s.min_collapse_before);

@@ -51,11 +51,8 @@ const double* coords(const HybridMesh& m, index_t v, std::array<double, 3>& out)
     return out.data();
 }
 
-// det[b - a, c - a, d - a] / 6 in plain double: a measure, not a decision.
 double signed_volume(const HybridMesh& m, index_t a, index_t b, index_t c, index_t d) {
-    const Vec3 pa = m.point(a);
-    const Vec3 u = m.point(b) - pa, v = m.point(c) - pa, w = m.point(d) - pa;
-    return dot(u, cross(v, w)) / 6;
+    return tet_volume(m.point(a), m.point(b), m.point(c), m.point(d));
 }
 
 void note(std::string& problems, int& noted, const std::string& line) {

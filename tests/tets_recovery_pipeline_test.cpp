@@ -15,6 +15,7 @@
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
 #include "geom/prepare.hpp"
+#include "tests/support/tet_domain_volume.hpp"
 
 namespace {
 
@@ -37,20 +38,15 @@ void recover_and_check(const geom::BlockSpec& spec, const std::string& label) {
     }
     tets::RecoveryStats st;
     const tets::TetDomain d = tets::recover_boundary(xyz, front, {}, &st);
-    double enclosed = 0, volume = 0;
-    auto det = [](const double* a, const double* b, const double* c, const double* o) {
-        const double u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]}, v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]},
-                     w[3] = {c[0] - o[0], c[1] - o[1], c[2] - o[2]};
-        return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
-    };
-    const double* o = d.point(0);
+    double enclosed = 0;
+    const Vec3 o = tets::point_vec(d, 0);
     for (std::size_t i = 0; i < front.size(); i += 3)
-        enclosed += det(d.point(front[i]), d.point(front[i + 1]), d.point(front[i + 2]), o) / 6;
+        enclosed += tet_volume(o, tets::point_vec(d, front[i]), tets::point_vec(d, front[i + 1]),
+                               tets::point_vec(d, front[i + 2]));
     std::size_t open = 0;
     for (index_t t = 0; t < d.tets.size(); ++t) {
         const index_t* v = d.tets.vertex(t);
         ASSERT_GT(predicates::orient3d(d.point(v[0]), d.point(v[1]), d.point(v[2]), d.point(v[3])), 0);
-        volume += det(d.point(v[1]), d.point(v[2]), d.point(v[3]), d.point(v[0])) / 6;
         for (int f = 0; f < 4; ++f) {
             const index_t nb = d.tets.neighbour(4 * t + f);
             if (nb == delaunay::kNoAdjacent) ++open;
@@ -58,6 +54,7 @@ void recover_and_check(const geom::BlockSpec& spec, const std::string& label) {
         }
     }
     EXPECT_EQ(open, front.size() / 3);
+    const double volume = tubemesh::testing::domain_volume(d);
     EXPECT_NEAR(volume, enclosed, 1e-9 * std::abs(enclosed));
     std::printf("%s: %zu front triangles, %u tets, missing edges %u faces %u, flips23 %llu removals %llu, "
                 "steiner %u inserted %u removed, %.3f s\n",

@@ -20,6 +20,7 @@
 #include "engine/tets/boundary_recovery.hpp"
 #include "engine/tets/control_space.hpp"
 #include "engine/tets/refine.hpp"
+#include "tests/support/tet_domain_volume.hpp"
 
 namespace {
 
@@ -119,20 +120,7 @@ TetDomain l_domain() {
     return make_domain(lx, ly, lz, std::move(tets));
 }
 
-double volume(const TetDomain& d) {
-    double v = 0;
-    for (index_t t = 0; t < d.tets.size(); ++t) {
-        const index_t* q = d.tets.vertex(t);
-        const double* a = d.point(q[0]);
-        double e[3][3];
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k) e[i][k] = d.point(q[i + 1])[k] - a[k];
-        v += (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-              e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-             6.0;
-    }
-    return v;
-}
+using tubemesh::testing::domain_volume;
 
 void expect_valid(const TetDomain& d, const std::vector<index_t>& front) {
     std::set<Tri> boundary;
@@ -209,7 +197,7 @@ SizeReport size_report(const TetDomain& d, const ControlSpace& cs, double reject
 
 void check_refinement(TetDomain d, const char* name) {
     const std::vector<index_t> front = d.front;
-    const double v0 = volume(d);
+    const double v0 = domain_volume(d);
     const index_t first_new = d.point_count();
     const ControlSpace cs(d);
     RefineOptions o;
@@ -219,7 +207,7 @@ void check_refinement(TetDomain d, const char* name) {
     const RefineStats s = refine_interior(d, cs, o);
     ASSERT_GT(s.inserted, 0u);
     expect_valid(d, front);
-    EXPECT_NEAR(volume(d), v0, 1e-9 * v0);
+    EXPECT_NEAR(domain_volume(d), v0, 1e-9 * v0);
     const SizeReport r = size_report(d, cs, o.reject_factor, first_new);
     std::printf("[%s] rounds %u, inserted %llu (blocked %llu, shrunk %llu, conflicts %llu), tets %u, %.3f s; "
                 "mean edge/h in [0.6,1.6]: %.1f %%; collapse min %.3f (tets with a new point %.3f) mean %.3f; "
@@ -322,7 +310,7 @@ TEST(Refine, RecoveredCubeWithHole) {
     ro.threads = 2;
     ro.partitions = 2;
     TetDomain d = recover_boundary(xyz, front, ro);
-    const double v0 = volume(d);
+    const double v0 = domain_volume(d);
     EXPECT_NEAR(v0, 1.0 - 0.3 * 0.3 * 0.3, 1e-9);
     check_refinement(std::move(d), "cube with hole (recovered)");
 }
@@ -332,7 +320,7 @@ TEST(Refine, RecoveredCubeWithHole) {
 TEST(ConstrainedKernel, FrontFacesSurvive) {
     TetDomain d = box_domain();
     const std::vector<index_t> front = d.front;
-    const double v0 = volume(d);
+    const double v0 = domain_volume(d);
     delaunay::Triangulation tri;
     tri.adopt(d.xyz, std::move(d.tets));
     const double pts[] = {0.53, 0.47, 1e-9,   // just inside the face z = 0
@@ -350,7 +338,7 @@ TEST(ConstrainedKernel, FrontFacesSurvive) {
     d.tets = tri.finish();
     d.xyz.insert(d.xyz.end(), pts, pts + 6);
     expect_valid(d, front);
-    EXPECT_NEAR(volume(d), v0, 1e-12);
+    EXPECT_NEAR(domain_volume(d), v0, 1e-12);
 }
 
 }  // namespace

@@ -19,6 +19,11 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 inline double norm2(const Vec3& a) { return dot(a, a); }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double distance2(const Vec3& a, const Vec3& b) { return norm2(a - b); }
+// det[b - a, c - a, d - a] / 6 in plain double: positive for a tet in topology.hpp's order. A
+// measure, not a decision (decisions use engine/predicates).
+inline double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    return dot(b - a, cross(c - a, d - a)) / 6;
+}
 
 // Squared distance between the closed segments p1q1 and p2q2 (Ericson, Real-Time Collision
 // Detection 5.1.9), with the degenerate (point-like and parallel) cases handled by clamping.

@@ -111,8 +111,8 @@ private:
                 for (int k = 0; k < 3; ++k) e[k] = 0.5 * (c[k] + m_.point(r)[k]);
                 cands.push_back(e);
             }
-            // Near the edge's midpoint, moved towards each ring point: inside the ring's kernel.
-            for (double t : {0.1, 0.25})
+            // The edge's midpoint moved the fraction t towards each ring point.
+            const auto towards_ring = [&](double t) {
                 for (index_t r : ring) {
                     std::array<double, 3> e;
                     for (int k = 0; k < 3; ++k) {
@@ -121,6 +121,9 @@ private:
                     }
                     cands.push_back(e);
                 }
+            };
+            // Near the edge's midpoint: inside the ring's kernel.
+            for (double t : {0.1, 0.25}) towards_ring(t);
             for (double w : {0.5, 0.4, 0.6}) {
                 std::array<double, 3> e;
                 for (int k = 0; k < 3; ++k) e[k] = m_.point(p)[k] + w * (m_.point(q)[k] - m_.point(p)[k]);
@@ -129,15 +132,7 @@ private:
             // Closer still to the midpoint: when the edge lies in the plane of a flat front (the
             // other diagonal of two front triangles), points on the edge are ruled out above and
             // the ring's far points (a box corner) leave only a thin kernel around the edge.
-            for (double t : {0.02, 0.005})
-                for (index_t r : ring) {
-                    std::array<double, 3> e;
-                    for (int k = 0; k < 3; ++k) {
-                        const double mid = 0.5 * (m_.point(p)[k] + m_.point(q)[k]);
-                        e[k] = mid + t * (m_.point(r)[k] - mid);
-                    }
-                    cands.push_back(e);
-                }
+            for (double t : {0.02, 0.005}) towards_ring(t);
             for (const auto& cand : cands) {
                 const double* s = cand.data();
                 if (point_on_target(m_, g, s)) continue;

@@ -163,6 +163,7 @@ void Triangulation::reserve_points(std::size_t n) {
     global_.reserve(n);
     local_.reserve(n);
     owner_.reserve(n);
+    advise_point_arrays();
 }
 
 index_t Triangulation::add_points(std::span<const double> xyz, std::span<const index_t> global_ids) {
@@ -174,6 +175,7 @@ index_t Triangulation::add_points(std::span<const double> xyz, std::span<const i
     local_.resize(global_.size(), kNoIndex);
     owner_.resize(global_.size());
     if (constrained_) seed_.resize(global_.size(), kNoIndex);
+    advise_point_arrays();
     note_memory();
     return first;
 }
@@ -194,6 +196,7 @@ index_t Triangulation::add_points(std::span<const double> x, std::span<const dou
             out[3 * k + 2] = z[ids[k]];
         }
     });
+    advise_point_arrays();
     note_memory();
     return first;
 }
@@ -202,6 +205,14 @@ void Triangulation::set_curve_keys(std::vector<std::uint64_t> keys) {
     if (keys.size() != global_.size()) throw Error("Delaunay: one curve key per point expected");
     key_ = std::move(keys);
     note_memory();
+}
+
+// Point arrays are read at random (every tet visited reads its four vertices): huge pages
+// as for the tet store. Called after every growth (a moved block loses the advice).
+void Triangulation::advise_point_arrays() {
+    advise_huge_pages(xyz_.data(), xyz_.capacity() * sizeof(double));
+    advise_huge_pages(local_.data(), local_.capacity() * sizeof(index_t));
+    advise_huge_pages(owner_.data(), owner_.capacity());
 }
 
 void Triangulation::note_memory() {

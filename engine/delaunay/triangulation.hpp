@@ -157,6 +157,7 @@ private:
     std::vector<index_t> insert_pass(std::span<const index_t> points, unsigned parts, int axis);
     index_t find_start(Part& part, index_t first_point, Scratch& s);
     void note_memory();
+    void advise_point_arrays();
 
     std::vector<double> xyz_;
     std::vector<index_t> global_;

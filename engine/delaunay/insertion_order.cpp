@@ -4,9 +4,12 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 #include <tbb/parallel_for.h>
+
+#include "engine/delaunay/huge_pages.hpp"
 
 namespace tubemesh::delaunay {
 namespace {
@@ -110,53 +113,84 @@ InsertionOrder brio_hilbert_order(std::span<const double> x, std::span<const dou
         out.round_begin = {0};
         return out;
     }
+    // Every pass over the points runs on fixed chunks, so the counts and the stable scatter
+    // below do not depend on the thread count, and the pages of the fresh arrays are first
+    // touched by both threads instead of one.
+    const std::size_t chunks = std::clamp<std::size_t>(n / 32768, 1, 64);
+    const auto chunk_begin = [&](std::size_t c) { return n * c / chunks; };
 
     // Round of each point: P(round from the end >= k) = 8^-k, capped so the first is not tiny.
     int last = 0;
     for (std::size_t s = n; s >= 8 * std::size_t{kSmallestRound}; s /= 8) ++last;
-    std::vector<std::uint8_t> round(n);
-    std::vector<index_t> count(last + 2, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const int from_end = std::min(std::countl_zero(splitmix64(i) | 1) / 3, last);
-        round[i] = static_cast<std::uint8_t>(last - from_end);
-        ++count[round[i] + 1];
+    const auto rounds = static_cast<std::size_t>(last) + 1;
+    const auto round_of = [last](std::size_t i) {
+        return last - std::min(std::countl_zero(splitmix64(i) | 1) / 3, last);
+    };
+    // count[c * rounds + r]: points of chunk c in round r; then, after the prefix sums in
+    // (round, chunk) order, where chunk c's first point of round r goes.
+    std::vector<std::size_t> count(chunks * rounds, 0);
+    struct Box {
+        double lo[3], hi[3];
+    };
+    std::vector<Box> box(chunks);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+        Box b{{x[chunk_begin(c)], y[chunk_begin(c)], z[chunk_begin(c)]}, {x[chunk_begin(c)], y[chunk_begin(c)], z[chunk_begin(c)]}};
+        for (std::size_t i = chunk_begin(c); i < chunk_begin(c + 1); ++i) {
+            ++count[c * rounds + static_cast<std::size_t>(round_of(i))];
+            const double p[3] = {x[i], y[i], z[i]};
+            for (int a = 0; a < 3; ++a) {
+                b.lo[a] = std::min(b.lo[a], p[a]);
+                b.hi[a] = std::max(b.hi[a], p[a]);
+            }
+        }
+        box[c] = b;
+    });
+    out.round_begin.assign(rounds + 1, 0);
+    {
+        std::size_t sum = 0;
+        for (std::size_t r = 0; r < rounds; ++r) {
+            out.round_begin[r] = static_cast<index_t>(sum);
+            for (std::size_t c = 0; c < chunks; ++c) sum += std::exchange(count[c * rounds + r], sum);
+        }
+        out.round_begin[rounds] = static_cast<index_t>(sum);
     }
-    for (int r = 0; r <= last; ++r) count[r + 1] += count[r];
-    out.round_begin = count;
 
     // Quantise on a cube so the curve is not stretched along a long axis.
-    double lo[3] = {x[0], y[0], z[0]}, hi[3] = {x[0], y[0], z[0]};
-    for (std::size_t i = 0; i < n; ++i) {
-        const double p[3] = {x[i], y[i], z[i]};
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p[a]);
-            hi[a] = std::max(hi[a], p[a]);
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = box[0].lo[a];
+        hi[a] = box[0].hi[a];
+        for (const Box& b : box) {
+            lo[a] = std::min(lo[a], b.lo[a]);
+            hi[a] = std::max(hi[a], b.hi[a]);
         }
     }
     const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
     for (int a = 0; a < 3; ++a) out.grid_lo[a] = lo[a];
     out.grid_scale = extent > 0 ? double(1u << kGridBits) / extent : 0.0;
 
-    std::vector<Keyed> keyed(n);
-    {
-        std::vector<index_t> fill(count.begin(), count.end() - 1);
-        for (std::size_t i = 0; i < n; ++i) keyed[fill[round[i]]++].id = static_cast<index_t>(i);
-    }
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t k = r.begin(); k < r.end(); ++k) {
-            const index_t i = keyed[k].id;
-            keyed[k].key = out.key_of(x[i], y[i], z[i]);
+    // Uninitialised (std::vector would zero 2 x 16 bytes per point on one thread first).
+    const std::unique_ptr<Keyed[]> keyed_block(new Keyed[n]);
+    const std::unique_ptr<Keyed[]> tmp_block(new Keyed[n]);
+    advise_huge_pages(keyed_block.get(), n * sizeof(Keyed));
+    advise_huge_pages(tmp_block.get(), n * sizeof(Keyed));
+    const std::span<Keyed> keyed(keyed_block.get(), n), tmp(tmp_block.get(), n);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+        std::size_t* at = count.data() + c * rounds;
+        for (std::size_t i = chunk_begin(c); i < chunk_begin(c + 1); ++i) {
+            Keyed& k = keyed[at[round_of(i)]++];
+            k.id = static_cast<index_t>(i);
+            k.key = out.key_of(x[i], y[i], z[i]);
         }
     });
 
     out.order.resize(n);
     out.key.resize(n);
-    std::vector<Keyed> tmp(n);
-    for (int r = 0; r <= last; ++r) {
+    for (std::size_t r = 0; r < rounds; ++r) {
         const index_t b = out.round_begin[r], e = out.round_begin[r + 1];
         // A round of m points needs about log2(m) + 6 key bits to order its neighbourhoods.
         const int need = std::bit_width(std::uint64_t{e - b}) + 6;
-        radix_sort(std::span(keyed).subspan(b, e - b), tmp, std::min(3 * kGridBits, (need + 7) / 8 * 8));
+        radix_sort(keyed.subspan(b, e - b), tmp, std::min(3 * kGridBits, (need + 7) / 8 * 8));
         const bool backwards = r % 2 == 1;
         tbb::parallel_for(tbb::blocked_range<index_t>(0, e - b, 16384), [&](const tbb::blocked_range<index_t>& k) {
             for (index_t i = k.begin(); i < k.end(); ++i) {

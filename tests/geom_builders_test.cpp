@@ -26,22 +26,15 @@
 #include "geom/import.hpp"
 #include "geom/model_occt.hpp"
 #include "geom/solid_check.hpp"
+#include "tests/support/error_of.hpp"
 
 namespace tubemesh::geom {
 namespace {
 
+using tubemesh::testing::error_of;
+
 constexpr double kPi = std::numbers::pi;
 namespace fs = std::filesystem;
-
-template <class F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
 
 int host_faces(const HostSpec& h) { return h.kind == HostSpec::Kind::Box ? 6 : 3; }
 

@@ -28,9 +28,12 @@
 #include "geom/solid_check.hpp"
 #include "geom/step_write.hpp"
 #include "geom/step_write_occt.hpp"
+#include "tests/support/error_of.hpp"
 
 namespace tubemesh::geom {
 namespace {
+
+using tubemesh::testing::error_of;
 
 namespace fs = std::filesystem;
 
@@ -41,17 +44,6 @@ fs::path scratch(const std::string& name) {
 }
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-// The message of the tubemesh::Error that `f` throws ("" when it throws none).
-template <class F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 

@@ -14,22 +14,13 @@
 #include "tests/mesh_io_samples.hpp"
 #include "tests/support/process.hpp"
 #include "tests/support/sample_meshes.hpp"
+#include "tests/support/error_of.hpp"
 
 namespace tubemesh {
 namespace {
 
+using testing::error_of;
 using testing::TempDir;
-
-// The error message of f(), or "" when it does not throw tubemesh::Error.
-template <class F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

@@ -2,16 +2,15 @@
 
 #include <array>
 
+#include "engine/mesh/vec3_ops.hpp"
+
 namespace tubemesh::testing {
 
 namespace {
 
+// Sign of the orientation of points a, b, c, d of m (the one tet_volume of vec3_ops).
 double orient(const HybridMesh& m, index_t a, index_t b, index_t c, index_t d) {
-    const Vec3 pa = m.point(a), pb = m.point(b), pc = m.point(c), pd = m.point(d);
-    const double ux = pb.x - pa.x, uy = pb.y - pa.y, uz = pb.z - pa.z;
-    const double vx = pc.x - pa.x, vy = pc.y - pa.y, vz = pc.z - pa.z;
-    const double wx = pd.x - pa.x, wy = pd.y - pa.y, wz = pd.z - pa.z;
-    return ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+    return tet_volume(m.point(a), m.point(b), m.point(c), m.point(d));
 }
 
 // Adds a tet with positive orientation whatever the order given.

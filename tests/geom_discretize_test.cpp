@@ -22,6 +22,7 @@
 #include "geom/discretize.hpp"
 #include "geom/discretize_edges.hpp"
 #include "tests/geom_tubes_solids.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh {
 namespace {
@@ -48,10 +49,6 @@ Case run(const TopoDS_Solid& solid, double sweep = 0.05, int ring_nodes = 0) {
     return c;
 }
 
-double norm(const Vec3& a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
 TEST(GeomDiscretize, StraightPipeCentreLineIsTheAxisAndRingsAlign) {
     const Case c =
         run(test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.5, -0.1}, {0.5, 0.5, 1.1})}, kR));
@@ -65,7 +62,7 @@ TEST(GeomDiscretize, StraightPipeCentreLineIsTheAxisAndRingsAlign) {
         EXPECT_NEAR(dot(s.reference, s.tangent), 0, 1e-12);
     }
     for (std::size_t k = 1; k < t.stations.size(); ++k)  // equal arc length steps
-        EXPECT_NEAR(norm(sub(t.stations[k].centre, t.stations[k - 1].centre)), 0.05, 1e-9);
+        EXPECT_NEAR(norm(t.stations[k].centre - t.stations[k - 1].centre), 0.05, 1e-9);
     ASSERT_EQ(t.ring1.size(), t.ring2.size());
     EXPECT_EQ(t.ring1.size() % 4, 0u);
     for (std::size_t k = 0; k < t.ring1.size(); ++k) {
@@ -133,7 +130,7 @@ TEST(GeomDiscretize, RingsTurnRightHandedAboutTheTangent) {
     ASSERT_EQ(c.geometry.tubes.size(), 1u);
     const TubeData& t = c.geometry.tubes[0];
     const auto turn = [](const std::vector<Vec3>& ring, const TubeStation& s) {
-        const Vec3 a = sub(ring[0], s.centre), b = sub(ring[1], s.centre);
+        const Vec3 a = ring[0] - s.centre, b = ring[1] - s.centre;
         const Vec3 n{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
         return dot(n, s.tangent);
     };
@@ -142,7 +139,7 @@ TEST(GeomDiscretize, RingsTurnRightHandedAboutTheTangent) {
     // Node 0 of each ring is where the station's reference direction points (across the
     // axis: the oblique loops also reach along it).
     const auto across = [](const Vec3& p, const TubeStation& s) {
-        const Vec3 d = sub(p, s.centre);
+        const Vec3 d = p - s.centre;
         const double along = dot(d, s.tangent);
         const Vec3 q{d.x - along * s.tangent.x, d.y - along * s.tangent.y, d.z - along * s.tangent.z};
         return dot(q, s.reference) / norm(q);
@@ -161,7 +158,7 @@ TEST(GeomDiscretize, SplitWallsDiscretiseLikeWholeOnes) {
     const TubeData& b = split.geometry.tubes[0];
     ASSERT_EQ(a.stations.size(), b.stations.size());
     for (std::size_t k = 0; k < a.stations.size(); ++k)
-        EXPECT_LT(norm(sub(a.stations[k].centre, b.stations[k].centre)), 1e-6);
+        EXPECT_LT(norm(a.stations[k].centre - b.stations[k].centre), 1e-6);
     EXPECT_EQ(b.ring1.size(), 8u);
     EXPECT_EQ(b.loop1_edges.size(), 2u);
 }
@@ -178,7 +175,7 @@ TEST(GeomDiscretize, EdgesAreCutOnceAtSizeS) {
         EXPECT_EQ(e.points.size(), e.params.size());
         EXPECT_NE(e.first_vertex, e.last_vertex);
         for (std::size_t k = 1; k < e.points.size(); ++k)
-            EXPECT_NEAR(norm(sub(e.points[k], e.points[k - 1])), 0.2, 1e-9);
+            EXPECT_NEAR(norm(e.points[k] - e.points[k - 1]), 0.2, 1e-9);
     }
     const std::set<index_t> loop_edges{c.geometry.tubes[0].loop1_edges[0], c.geometry.tubes[0].loop2_edges[0]};
     for (index_t id : loop_edges) EXPECT_EQ(ids.count(id), 0u);
@@ -203,7 +200,7 @@ TopoDS_Solid elliptic_prism(double a, double b) {
 double max_chord_turn(const EdgePolyline& e) {
     double worst = 0;
     for (std::size_t k = 1; k + 1 < e.points.size(); ++k) {
-        const Vec3 u = sub(e.points[k], e.points[k - 1]), v = sub(e.points[k + 1], e.points[k]);
+        const Vec3 u = e.points[k] - e.points[k - 1], v = e.points[k + 1] - e.points[k];
         worst = std::max(worst, std::acos(std::clamp(dot(u, v) / (norm(u) * norm(v)), -1.0, 1.0)));
     }
     return worst;
@@ -227,7 +224,7 @@ TEST(GeomDiscretize, CircleEdgeSegmentsTurnAtMost0065) {
                                     });
                 if (!circle) {
                     // Straight: the box's edges (length 1) and the hole's seam (0.3), at S alone.
-                    const double length = norm(sub(e.points.back(), e.points.front()));
+                    const double length = norm(e.points.back() - e.points.front());
                     EXPECT_EQ(e.points.size(), std::size_t(std::ceil(length / S - 1e-9)) + 1) << "edge " << e.edge;
                     ++straight;
                     continue;
@@ -237,7 +234,7 @@ TEST(GeomDiscretize, CircleEdgeSegmentsTurnAtMost0065) {
                 // Each segment's arc turns by its central angle, 2 asin(chord / 2r); the
                 // polygon's corners turn by the same angles.
                 for (std::size_t k = 0; k + 1 < e.points.size(); ++k) {
-                    const double chord = norm(sub(e.points[k + 1], e.points[k]));
+                    const double chord = norm(e.points[k + 1] - e.points[k]);
                     EXPECT_LE(2 * std::asin(chord / (2 * r)), kMaxTurn) << "edge " << e.edge << " segment " << k;
                 }
                 EXPECT_LE(max_chord_turn(e), kMaxTurn) << "edge " << e.edge;

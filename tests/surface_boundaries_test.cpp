@@ -69,21 +69,6 @@ private:
     std::vector<std::vector<Use>> loops_;
 };
 
-// TUBEMESH_SURFACE_DUMP=dir: "V x y z" / "U u v" / "T a b c" lines for looking at a face.
-void dump_face(const surface::FaceMesh& m, const FaceBoundary& b, const char* name) {
-    const char* dir = std::getenv("TUBEMESH_SURFACE_DUMP");
-    if (dir == nullptr) return;
-    FILE* f = std::fopen((std::string(dir) + "/" + name + ".txt").c_str(), "w");
-    for (const Vec3& x : m.xyz) std::fprintf(f, "V %.17g %.17g %.17g\n", x.x, x.y, x.z);
-    std::vector<Uv> uv(m.xyz.size());
-    for (std::size_t k = b.loop_node.size(); k-- > 0;) uv[b.loop_node[k]] = b.loop_uv[k];
-    for (std::size_t k = 0; k < m.interior_uv.size(); ++k) uv[m.boundary_count + k] = m.interior_uv[k];
-    for (const Uv& p : uv) std::fprintf(f, "U %.17g %.17g\n", p.u, p.v);
-    for (index_t t = 0; t < m.triangle_count(); ++t)
-        std::fprintf(f, "T %u %u %u\n", m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]);
-    std::fclose(f);
-}
-
 EdgePolyline cut(index_t edge, index_t v0, index_t v1, double t0, double t1, int n,
                  const std::function<Vec3(double)>& curve) {
     EdgePolyline e{edge, v0, v1, {}, {}};

@@ -45,21 +45,6 @@ void expect_good(const FaceReport& r, const char* what) {
 double chord_tolerance(double k, double h) { return (k * h) * (k * h) / 3 + 1e-9; }
 
 // TUBEMESH_SURFACE_DUMP=dir writes each face as "V x y z" / "T a b c" lines, for looking at.
-void dump(const FaceMesh& m, const FaceBoundary& b, const std::string& name) {
-    const char* dir = std::getenv("TUBEMESH_SURFACE_DUMP");
-    if (dir == nullptr) return;
-    FILE* f = std::fopen((std::string(dir) + "/" + name + ".txt").c_str(), "w");
-    if (f == nullptr) return;
-    for (const Vec3& x : m.xyz) std::fprintf(f, "V %.17g %.17g %.17g\n", x.x, x.y, x.z);
-    std::vector<Uv> uv(m.xyz.size());
-    for (std::size_t k = b.loop_node.size(); k-- > 0;) uv[b.loop_node[k]] = b.loop_uv[k];
-    for (std::size_t k = 0; k < m.interior_uv.size(); ++k) uv[m.boundary_count + k] = m.interior_uv[k];
-    for (const Uv& p : uv) std::fprintf(f, "U %.17g %.17g\n", p.u, p.v);
-    for (index_t t = 0; t < m.triangle_count(); ++t)
-        std::fprintf(f, "T %u %u %u\n", m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]);
-    std::fclose(f);
-}
-
 void expect_area(const FaceReport& r, double exact, double tolerance) {
     const double error = std::abs(r.area - exact) / exact;
     EXPECT_LE(error, tolerance) << "area " << r.area << " vs " << exact;
@@ -86,7 +71,7 @@ Case mesh_rectangle(const AnalyticSurface& s, double S, Uv lo, Uv hi, const std:
     c.boundary = b.take();
     c.mesh = surface::mesh_face(s, c.boundary, size);
     c.report = inspect_face(s, c.boundary, c.mesh, size);
-    dump(c.mesh, c.boundary, ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dump_face(c.mesh, c.boundary, ::testing::UnitTest::GetInstance()->current_test_info()->name());
     return c;
 }
 

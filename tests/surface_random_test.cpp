@@ -65,18 +65,9 @@ FaceReport mesh_random(const AnalyticSurface& s, std::mt19937_64& rng, Uv hi, do
     const surface::FaceBoundary boundary = b.take();
     const surface::FaceMesh m = surface::mesh_face(s, boundary, size);
     FaceReport r = inspect_face(s, boundary, m, size);
-    if (const char* dir = std::getenv("TUBEMESH_SURFACE_DUMP"); dir && r.max_neighbor_ratio > 1.5) {
+    if (r.max_neighbor_ratio > 1.5) {
         static int count = 0;
-        FILE* f = std::fopen((std::string(dir) + "/random" + std::to_string(count++) + ".txt").c_str(), "w");
-        for (const Vec3& x : m.xyz) std::fprintf(f, "V %.17g %.17g %.17g\n", x.x, x.y, x.z);
-        std::vector<Uv> uv(m.xyz.size());
-        for (std::size_t k = boundary.loop_node.size(); k-- > 0;) uv[boundary.loop_node[k]] = boundary.loop_uv[k];
-        for (std::size_t k = 0; k < m.interior_uv.size(); ++k) uv[m.boundary_count + k] = m.interior_uv[k];
-        for (const Uv& p : uv) std::fprintf(f, "U %.17g %.17g\n", p.u, p.v);
-        for (index_t t = 0; t < m.triangle_count(); ++t)
-            std::fprintf(f, "T %u %u %u\n", m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]);
-        std::fprintf(f, "B %u\n", m.boundary_count);
-        std::fclose(f);
+        dump_face(m, boundary, "random" + std::to_string(count++));
     }
     return r;
 }

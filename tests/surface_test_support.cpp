@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <numbers>
+#include <string>
 #include <unordered_map>
 
 #include "engine/predicates/predicates.hpp"
@@ -273,6 +276,22 @@ ClosedReport inspect_closed(const HybridMesh& mesh) {
             if (contact == predicates::Contact::Touching && shared == 0) ++r.touching_pairs;
         }
     return r;
+}
+
+void dump_face(const surface::FaceMesh& m, const surface::FaceBoundary& b, const std::string& name) {
+    const char* dir = std::getenv("TUBEMESH_SURFACE_DUMP");
+    if (dir == nullptr) return;
+    FILE* f = std::fopen((std::string(dir) + "/" + name + ".txt").c_str(), "w");
+    if (f == nullptr) return;
+    for (const Vec3& x : m.xyz) std::fprintf(f, "V %.17g %.17g %.17g\n", x.x, x.y, x.z);
+    std::vector<Uv> uv(m.xyz.size());
+    for (std::size_t k = b.loop_node.size(); k-- > 0;) uv[b.loop_node[k]] = b.loop_uv[k];
+    for (std::size_t k = 0; k < m.interior_uv.size(); ++k) uv[m.boundary_count + k] = m.interior_uv[k];
+    for (const Uv& p : uv) std::fprintf(f, "U %.17g %.17g\n", p.u, p.v);
+    for (index_t t = 0; t < m.triangle_count(); ++t)
+        std::fprintf(f, "T %u %u %u\n", m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]);
+    std::fprintf(f, "B %u\n", m.boundary_count);
+    std::fclose(f);
 }
 
 }  // namespace tubemesh::testing

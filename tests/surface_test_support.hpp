@@ -14,6 +14,11 @@
 
 namespace tubemesh::testing {
 
+// With TUBEMESH_SURFACE_DUMP=dir set, writes a face mesh to dir/name.txt for looking at it:
+// "V x y z", "U u v" per node, "T a b c" per triangle, "B boundary-node-count". Does nothing
+// without the variable.
+void dump_face(const surface::FaceMesh& m, const surface::FaceBoundary& b, const std::string& name);
+
 // Builds a face boundary: sides are straight in uv and cut by the size field (arc length in
 // space over the local size); nodes at one position in space (a seam's two sides, loop
 // corners) are merged into one boundary node.

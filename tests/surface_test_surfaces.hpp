@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh::testing {
 
@@ -39,15 +40,6 @@ private:
     bool reversed_;
     index_t id_;
 };
-
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 // origin + u·e1 + v·e2 (e1, e2 orthogonal, any length).
 class PlaneSurface : public AnalyticSurface {

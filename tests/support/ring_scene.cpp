@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/mesh/vec3_ops.hpp"
+
 namespace tubemesh::testing {
 
 namespace {
@@ -13,11 +15,6 @@ namespace {
 constexpr int kSides = 8;
 
 double coord(const Vec3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 double det(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
 
 class Builder {
@@ -36,7 +33,7 @@ public:
     // Outward normal of a box face is +/- e_axis; triangles are emitted with that normal.
     void triangle(index_t a, index_t b, index_t c, const Vec3& outward) {
         const Vec3 pa = scene.mesh.point(a), pb = scene.mesh.point(b), pc = scene.mesh.point(c);
-        if (dot(cross(sub(pb, pa), sub(pc, pa)), outward) < 0) std::swap(b, c);
+        if (dot(cross(pb - pa, pc - pa), outward) < 0) std::swap(b, c);
         scene.boundary_triangles.insert(scene.boundary_triangles.end(), {a, b, c});
     }
 

@@ -53,11 +53,24 @@ void PointIndex::nearest(const Vec3& query, index_t k, std::vector<Neighbor>& ou
     // nanoflann's own order among equal distances depends on the tree layout: re-sort by
     // (distance, index) so callers see one documented order.
     const std::size_t want = std::min<std::size_t>(k, size());
-    std::vector<index_t> idx(want);
-    std::vector<double> d2(want);
-    const std::size_t found = impl_->tree.knnSearch(q, want, idx.data(), d2.data());
-    out.reserve(found);
-    for (std::size_t i = 0; i < found; ++i) out.push_back({idx[i], d2[i]});
+    // Small k, the common case (the tet step's size field asks for 8 on every query), uses
+    // buffers on the stack: no heap allocation per query.
+    constexpr std::size_t kOnStack = 32;
+    index_t idx_stack[kOnStack];
+    double d2_stack[kOnStack];
+    std::vector<index_t> idx_heap;
+    std::vector<double> d2_heap;
+    index_t* idx = idx_stack;
+    double* d2 = d2_stack;
+    if (want > kOnStack) {
+        idx_heap.resize(want);
+        d2_heap.resize(want);
+        idx = idx_heap.data();
+        d2 = d2_heap.data();
+    }
+    const std::size_t found = impl_->tree.knnSearch(q, want, idx, d2);
+    out.resize(found);
+    for (std::size_t i = 0; i < found; ++i) out[i] = {idx[i], d2[i]};
     std::sort(out.begin(), out.end(), closer);
 }
 

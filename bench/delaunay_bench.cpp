@@ -20,10 +20,9 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "bench/process_measure.hpp"
 #include "engine/delaunay/delaunay.hpp"
+#include "tests/support/process.hpp"
 
 namespace {
 
@@ -66,8 +65,9 @@ void BM_Delaunay(benchmark::State& state) {
     const Points& p = cube_points(n);
     tubemesh::delaunay::DelaunayStats stats;
     double rss_growth = 0;
+    bool peak_ok = true;
     for (auto _ : state) {
-        reset_peak_rss();
+        peak_ok = reset_peak_rss() && peak_ok;
         const long before = status_kb("VmRSS");
         auto r = tubemesh::delaunay::delaunay(p.x, p.y, p.z, {.threads = threads});
         rss_growth = 1024.0 * double(status_kb("VmHWM") - before);
@@ -82,7 +82,7 @@ void BM_Delaunay(benchmark::State& state) {
     state.counters["points_per_s"] = benchmark::Counter(double(n), benchmark::Counter::kIsIterationInvariantRate);
     state.counters["tets_per_s"] = benchmark::Counter(tets, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["store_bytes_per_tet"] = stats.bytes_per_tet;
-    state.counters["rss_bytes_per_tet"] = rss_growth / tets;
+    if (peak_ok) state.counters["rss_bytes_per_tet"] = rss_growth / tets;
     state.counters["conflicts"] = double(stats.conflicts);
     state.counters["passes"] = double(stats.passes);
     state.counters["s_order"] = stats.seconds_order;
@@ -92,20 +92,10 @@ void BM_Delaunay(benchmark::State& state) {
         state.counters["x_tetgen"] = tets / stats.seconds_total / it->second;
 }
 
-// A temporary directory for the .node files, removed at exit.
-struct TempDir {
-    fs::path path = fs::temp_directory_path() / ("tubemesh_bench_delaunay_" + std::to_string(getpid()));
-    ~TempDir() {
-        std::error_code ignore;
-        fs::remove_all(path, ignore);
-    }
-};
-
 // Writes the points as a TetGen .node file (%.17g round-trips every double), once per size.
 fs::path write_node_file(std::size_t n) {
-    static TempDir temp;
-    const fs::path& dir = temp.path;
-    fs::create_directories(dir);
+    static tubemesh::testing::TempDir temp;  // removed at exit
+    const fs::path& dir = temp.path();
     const fs::path file = dir / ("cube_" + std::to_string(n) + ".node");
     if (fs::exists(file)) return file;
     const Points& p = cube_points(n);

@@ -10,8 +10,12 @@ namespace tubemesh::bench {
 // A "Vm..." line of /proc/self/status ("VmRSS", "VmHWM"), in KiB; -1 when it is missing.
 long status_kb(const char* key);
 
-// Lowers the peak (VmHWM) to the current resident set, so that the next peak is the work's own.
-void reset_peak_rss();
+// Lowers the resident set to the live heap (glibc malloc_trim) and the peak (VmHWM) to that
+// resident set (/proc/self/clear_refs "5"), so that the next peak minus VmRSS is the work's
+// own growth, whatever ran before in this process. False when the kernel did not lower the
+// peak (no clear_refs, or a kernel that ignores "5"): the growth measured after it is then
+// only what exceeds earlier peaks, and callers leave their peak counters out.
+bool reset_peak_rss();
 
 // User + system CPU seconds of this process so far, all threads: against the wall time it shows
 // how much of the shared machine the work got.

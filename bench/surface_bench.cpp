@@ -6,6 +6,11 @@
 //   BM_LiftBlockFaces: the block's six faces, 20 ring polygons in each 20 x 15 face, meshed by
 //                      mesh_surfaces (faces in parallel).
 // Both at 1 and 2 threads (tbb::global_control).
+//
+// Why these synthetic faces beside Surface/<case> in bench_phases (the reference cases through
+// geom): they are planes, so they time the face mesher without OpenCASCADE's surface
+// evaluation, and they hold 20 to 40 ring holes per face, where the reference cases have a few
+// at most: the mesher's cost per hole shows only here.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

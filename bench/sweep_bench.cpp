@@ -1,6 +1,12 @@
 // Sweep throughput: hex rings along a dam lift's serpentine cooling pipe (20 m legs 1.5 m
 // apart, diameter 0.032, St = 2r as geom's default), 1 and 2 threads, hexes per second.
 // One lift has one pipe of about 220 m; "4 lifts" sweeps four such pipes at once.
+//
+// Why this synthetic scene beside Sweep/<case> in bench_phases (the reference cases through
+// geom): its walls and hosts are analytic surfaces, so it times the sweep's own work without
+// OpenCASCADE's surface evaluation (the difference to Sweep/serpentine-lift is that cost), and
+// "4 lifts" is several long tubes at once, which no reference case has (paper-ex2's four
+// holes are short): the sweep's scaling over tubes shows only here.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The gate's own acceptance test: a second, small build whose Delaunay insertion does about
+# The gate's own acceptance test: a second build whose Delaunay insertion does about
 # 25 % more work (CMake option TUBEMESH_BENCH_SLOWDOWN) must make tools/bench-compare fail
 # with exit status 1. A pass, or a gate that cannot run (status 2), fails this test.
 # Usage: bench_gate_slowdown.sh SOURCE_DIR BUILD_DIR CXX_COMPILER
@@ -12,7 +12,8 @@ if command -v ccache >/dev/null; then
 fi
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" \
     -DTUBEMESH_BUILD_TESTS=OFF -DTUBEMESH_BENCH_SLOWDOWN=25 "${launcher[@]}" >/dev/null
-cmake --build "$build" --target bench_gate
+# Two jobs: the machines running this have two cores, shared.
+cmake --build "$build" -j2 --target bench_gate
 status=0
 "$src/tools/bench-compare" --build-dir "$build" || status=$?
 if [ "$status" -eq 1 ]; then

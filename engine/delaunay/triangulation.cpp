@@ -430,7 +430,9 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
         unsigned sink = 0;
         const std::size_t redo = nb * TUBEMESH_BENCH_SLOWDOWN / 50;
         for (std::size_t i = 0; i < redo; ++i) {
-            sink += in_conflict(s.boundary[i % nb].outer >> 2, pp, p);
+            const index_t outer = s.boundary[i % nb].outer;
+            if (outer == kNoAdjacent) continue;  // a front face (constrained mode): no tet behind it
+            sink += in_conflict(outer >> 2, pp, p);
             asm volatile("" : "+r"(sink) : : "memory");
         }
     }

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "engine/mesh/vec3_ops.hpp"
+#include "engine/pipeline/surface_sizing.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/surface/size_field.hpp"
 #include "geom/builders/block_builder.hpp"
@@ -114,17 +115,6 @@ void measure_rings(const geom::PreparedModel& prepared, const PipelineResult& r,
     }
 }
 
-// The size field the pipeline meshed the surfaces with (pipeline.cpp builds the same).
-SizeField pipeline_size_field(const PipelineResult& r, double size, const MeshOptions& options) {
-    std::vector<SizeSource> sources;
-    for (const TubeRing& ring : r.sweep.rings)
-        for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, sources);
-    SizeFieldOptions sf;
-    sf.max_size = size;
-    sf.growth = options.size_growth;
-    return SizeField(sf, std::move(sources));
-}
-
 void measure_face_areas(const geom::Model& model, const PipelineInput& input, const HybridMesh& mesh,
                         SurfaceAcceptance& out) {
     // Per face: mesh area, and the chord bound sum A_t (1/cos a_t - 1), a_t the largest angle
@@ -186,7 +176,8 @@ void measure_surface(const geom::BuiltBlock& block, const geom::PreparedModel& p
     out.surface = inspect_surface(mesh, static_cast<index_t>(prepared.geometry.tubes.size()));
 
     // Nodes on their faces, each (node, face) once.
-    const SizeField size = pipeline_size_field(r, prepared.geometry.size, options);
+    SurfaceSizing sizing = surface_sizing(input, r.sweep.rings, options);  // the field the mesher had
+    const SizeField size(sizing.options, std::move(sizing.sources));
     std::map<std::pair<index_t, index_t>, char> seen;
     for (std::size_t t = 0; t < tris.group.size(); ++t) {
         const index_t face = face_of_group(mesh.surface_group_names[tris.group[t]]);

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "engine/surface/face_boundaries.hpp"
+#include "engine/pipeline/surface_sizing.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
 
 namespace tubemesh {
@@ -56,7 +57,6 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
 void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
     const DiscreteGeometry& g = in.geometry;
-    if (!(g.size > 0)) throw Error("the overall mesh size S must be positive to mesh the surfaces");
     HybridMesh& mesh = out.mesh;
 
     std::vector<index_t> tube_loop_edges;
@@ -67,28 +67,9 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
         walls.insert(t.wall_faces.begin(), t.wall_faces.end());
     }
 
-    // Size field: S everywhere, finer near the rings' outer polygons. geom cut the B-rep edges
-    // at S (finer where they curve); where the rings ask for less they are cut again, on the
-    // first face (in id order) that uses them. Then the edges' own short segments (curved or
-    // short edges) become sources too, so the faces grade from them.
-    std::vector<SizeSource> ring_sources;
-    for (const TubeRing& ring : out.sweep.rings)
-        for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, ring_sources);
-    SizeFieldOptions sf;
-    sf.max_size = g.size;
-    sf.growth = opt.size_growth;
-    std::unordered_map<index_t, surface::EdgeOnFace> edge_faces;
-    for (const PipelineFace& f : in.faces)
-        if (!(f.tube_wall || walls.count(f.id)))
-            if (const SurfaceMap* map = in.surfaces(f.id)) surface::add_edge_faces(*map, edge_faces);
-    std::vector<EdgePolyline> edges;
-    std::vector<SizeSource> sources = ring_sources;
-    {
-        const SizeField rings(sf, std::move(ring_sources));
-        edges = surface::follow_size_field(g.edges, edge_faces, rings);
-        surface::add_short_edge_sources(edges, rings, sources);
-    }
-    const SizeField size(sf, std::move(sources));
+    SurfaceSizing sizing = surface_sizing(in, out.sweep.rings, opt);
+    const std::vector<EdgePolyline>& edges = sizing.edges;
+    const SizeField size(sizing.options, std::move(sizing.sources));
 
     const index_t points_before = mesh.point_count();
     const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(edges, mesh);

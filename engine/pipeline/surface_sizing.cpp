@@ -1,0 +1,36 @@
+#include "engine/pipeline/surface_sizing.hpp"
+
+#include <unordered_map>
+#include <unordered_set>
+
+#include "engine/surface/face_boundaries.hpp"
+
+namespace tubemesh {
+
+SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> rings, const MeshOptions& options) {
+    const DiscreteGeometry& g = in.geometry;
+    if (!(g.size > 0)) throw Error("the overall mesh size S must be positive to mesh the surfaces");
+    std::unordered_set<index_t> walls;
+    for (const TubeData& t : g.tubes) walls.insert(t.wall_faces.begin(), t.wall_faces.end());
+
+    SurfaceSizing out;
+    out.options.max_size = g.size;
+    out.options.growth = options.size_growth;
+    std::vector<SizeSource> ring_sources;
+    for (const TubeRing& ring : rings)
+        for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, ring_sources);
+    // geom cut the B-rep edges at S (finer where they curve); where the rings ask for less they
+    // are cut again, on the first face (in id order) that uses them. Then the edges' own short
+    // segments (curved or short edges) become sources too, so the faces grade from them.
+    std::unordered_map<index_t, surface::EdgeOnFace> edge_faces;
+    for (const PipelineFace& f : in.faces)
+        if (!(f.tube_wall || walls.count(f.id)))
+            if (const SurfaceMap* map = in.surfaces(f.id)) surface::add_edge_faces(*map, edge_faces);
+    out.sources = ring_sources;
+    const SizeField ring_field(out.options, std::move(ring_sources));
+    out.edges = surface::follow_size_field(g.edges, edge_faces, ring_field);
+    surface::add_short_edge_sources(out.edges, ring_field, out.sources);
+    return out;
+}
+
+}  // namespace tubemesh

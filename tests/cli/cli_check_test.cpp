@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/mesh_io.hpp"
+#include "tests/support/cli_command.hpp"
 #include "tests/support/process.hpp"
 #include "tests/support/sample_meshes.hpp"
 
@@ -13,10 +14,9 @@ namespace {
 
 using namespace tubemesh;
 using tubemesh::testing::run_command;
+using tubemesh::testing::cli;
 using tubemesh::testing::shell_quote;
 using tubemesh::testing::TempDir;
-
-std::string cli() { return shell_quote(TUBEMESH_CLI); }
 
 tubemesh::testing::ProcessResult check(const std::filesystem::path& p, const std::string& extra = "") {
     return run_command(cli() + " check " + shell_quote(p.string()) + extra);

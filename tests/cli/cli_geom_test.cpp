@@ -11,6 +11,7 @@
 #include <regex>
 #include <string>
 
+#include "tests/support/cli_command.hpp"
 #include "tests/support/process.hpp"
 
 namespace {
@@ -18,11 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 using tubemesh::testing::ProcessResult;
 using tubemesh::testing::run_command;
-using tubemesh::testing::shell_quote;
+using tubemesh::testing::cli;
+using tubemesh::testing::q;
 using tubemesh::testing::TempDir;
-
-std::string cli() { return shell_quote(TUBEMESH_CLI); }
-std::string q(const fs::path& p) { return shell_quote(p.string()); }
 
 ProcessResult tubemesh_cmd(const std::string& args) { return run_command(cli() + " " + args); }
 

@@ -13,17 +13,16 @@
 #include <fstream>
 
 #include "geom/step_write_occt.hpp"
+#include "tests/support/cli_command.hpp"
 #include "tests/support/process.hpp"
 
 namespace {
 
 using tubemesh::testing::run_command;
-using tubemesh::testing::shell_quote;
+using tubemesh::testing::cli;
+using tubemesh::testing::q;
 using tubemesh::testing::TempDir;
 namespace fs = std::filesystem;
-
-std::string cli() { return shell_quote(TUBEMESH_CLI); }
-std::string q(const fs::path& p) { return shell_quote(p.string()); }
 
 TopoDS_Shape box(double x0, double dx) { return BRepPrimAPI_MakeBox(gp_Pnt(x0, 0, 0), dx, 2, 3).Shape(); }
 

@@ -13,6 +13,7 @@
 
 #include "engine/io/mesh_io.hpp"
 #include "tests/mesh_io_samples.hpp"
+#include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"
 
@@ -23,11 +24,9 @@ using nlohmann::json;
 using testing::Counts;
 using testing::run_command;
 using testing::run_script;
-using testing::shell_quote;
+using testing::cli;
+using testing::q;
 using testing::TempDir;
-
-std::string cli() { return shell_quote(TUBEMESH_CLI); }
-std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
 
 // The straight-pipe block (4 x 3 x 2, one pipe of diameter 0.1) at a coarse size: a full
 // hybrid mesh of a few thousand elements, meshed once for every test below.

@@ -10,16 +10,15 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/mesh_io.hpp"
+#include "tests/support/cli_command.hpp"
 #include "tests/support/process.hpp"
 
 namespace {
 
 using tubemesh::testing::run_command;
-using tubemesh::testing::shell_quote;
+using tubemesh::testing::cli;
+using tubemesh::testing::q;
 using tubemesh::testing::TempDir;
-
-std::string cli() { return shell_quote(TUBEMESH_CLI); }
-std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
 
 nlohmann::json read_json(const std::filesystem::path& p) {
     std::ifstream in(p);

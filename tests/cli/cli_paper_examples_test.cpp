@@ -18,6 +18,7 @@
 #include <string>
 
 #include "engine/io/mesh_io.hpp"
+#include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"
 
@@ -26,11 +27,9 @@ namespace {
 
 using nlohmann::json;
 using testing::run_command;
-using testing::shell_quote;
+using testing::cli;
+using testing::q;
 using testing::TempDir;
-
-std::string cli() { return shell_quote(TUBEMESH_CLI); }
-std::string q(const std::filesystem::path& p) { return shell_quote(p.string()); }
 
 struct Example {
     const char* preset;

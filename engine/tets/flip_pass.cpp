@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -28,6 +29,34 @@ struct Candidate {
 };
 
 constexpr std::array<std::array<int, 2>, 6> kTetEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
+// How much a flip raises the sum of the mesh's collapses beyond keeping its mean: a flip that
+// adds a tet must bring more than the mean with it (positive: the mean rises).
+double mean_gain(const FlipPlan& p, double mean) {
+    return p.new_sum - p.old_sum - mean * static_cast<double>(p.new_count - p.old_count);
+}
+
+// A fair tet (collapse at or above the floor) gets the flip that most raises the mesh's mean
+// while every tet it makes stays at or above the floor.
+bool best_mean_flip(const TetDomain& dom, index_t t, double min_gain, int max_ring, double mean, double floor,
+                    FlipPlan& best) {
+    FlipPlan plan;
+    bool found = false;
+    double best_gain = 0;
+    const auto consider = [&](bool planned) {
+        if (!planned || plan.new_min < floor) return;
+        const double gain = mean_gain(plan, mean);
+        if (gain > min_gain * plan.old_count && (!found || gain > best_gain)) {
+            best = plan;
+            best_gain = gain;
+            found = true;
+        }
+    };
+    const double below_floor = std::nextafter(floor, -1.0);
+    for (const auto& e : kTetEdges) consider(plan_edge_removal(dom, t, e[0], e[1], max_ring, plan, below_floor));
+    for (int f = 0; f < 4; ++f) consider(plan_flip23(dom, t, f, plan));
+    return found;
+}
 
 // The move that leaves the best smallest collapse among those that beat their own old tets
 // by min_gain; false when there is none.
@@ -114,8 +143,9 @@ std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const st
 
 }  // namespace
 
-FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring,
-                           const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed) {
+FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
+                           double mean_floor, const std::vector<std::uint8_t>* active,
+                           std::vector<std::uint8_t>& changed) {
     FlipSweepCounts counts;
     std::vector<Candidate> cands = bad_tets(dom, threshold, active);
     std::vector<std::size_t> pending(cands.size());
@@ -141,7 +171,9 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                 if (!still_there(dom, c)) return;
                 planning_reads(dom, c.tet, max_edge_ring, c.reads);
                 c.planned = stamp;
-                c.has_plan = best_flip(dom, c.tet, min_gain, max_edge_ring, c.plan);
+                c.has_plan = c.collapse < mean_floor || mean <= 0
+                                  ? best_flip(dom, c.tet, min_gain, max_edge_ring, c.plan)
+                                  : best_mean_flip(dom, c.tet, min_gain, max_edge_ring, mean, mean_floor, c.plan);
                 if (c.has_plan) plan_claims(dom, c.plan, c.reads, c.claims);
             }
             alive[i] = c.has_plan;

@@ -1,7 +1,9 @@
 #pragma once
 // One sweep of topological improvement over a whole TetDomain: every tet below a collapse
 // threshold, worst first, gets the flip (2-3 on one of its faces, or removal of one of its
-// edges) that best raises the smallest collapse of the tets it replaces.
+// edges) that best raises the smallest collapse of the tets it replaces; a tet at or above
+// `mean_floor` instead gets the one that most raises the mesh's mean collapse (the new tets'
+// sum minus the old ones' beyond `mean` per added tet) with every new tet at or above the floor.
 //
 // Parallel and deterministic. Planning a candidate reads only its tet, the tet's face
 // neighbours and the shells of its six edges (its reads); applying the plan writes only the
@@ -24,10 +26,12 @@ struct FlipSweepCounts {
     std::uint64_t total() const { return flips23 + flips32 + flips44 + edge_removals; }
 };
 
-// `active` (one flag per point, or nullptr for all points): only tets with an active vertex
-// are attacked; later passes use it to revisit only what changed. Every vertex of a tet a
+// `mean`: the mesh's mean collapse now (0: no mean-raising flips). `active` (one flag per point,
+// or nullptr for all points): only tets with an active vertex are attacked; later passes use it
+// to revisit only what changed. Every vertex of a tet a
 // flip creates gets changed[p] = 1 (changed has one flag per point). Leaves no free slots.
-FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring,
-                           const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed);
+FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
+                           double mean_floor, const std::vector<std::uint8_t>* active,
+                           std::vector<std::uint8_t>& changed);
 
 }  // namespace tubemesh::tets

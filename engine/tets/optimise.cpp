@@ -62,6 +62,7 @@ void check(const OptimiseOptions& o) {
     if (!(o.flip_threshold <= 1.0 && o.flip_threshold >= 0.0)) fail("flip_threshold must lie in [0, 1]");
     if (!(o.smoothing_threshold >= 0.0)) fail("smoothing_threshold must be 0 or more");
     if (!(o.min_mean_gain >= 0.0)) fail("min_mean_gain must be 0 or more");
+    if (!(o.mean_floor >= 0.0 && o.mean_floor <= 1.0)) fail("mean_floor must lie in [0, 1]");
 }
 
 // The points of every tet with a changed point: the points whose star (and so whose flips and
@@ -113,7 +114,8 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         }
         std::fill(changed.begin(), changed.end(), 0);
         const FlipSweepCounts f =
-            flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, pass > 0 ? &near : nullptr, changed);
+            flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, last_mean, o.mean_floor,
+                       pass > 0 ? &near : nullptr, changed);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_flips += since(t0);
@@ -129,7 +131,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         }
         std::fill(changed.begin(), changed.end(), 0);
         const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain,
-                                                pass > 0 ? &near : nullptr, changed);
+                                                o.mean_floor, pass > 0 ? &near : nullptr, changed);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_smoothing += since(t0);

@@ -1,9 +1,11 @@
 #pragma once
-// Smoothing of the free points of a TetDomain (paper §5): a point moves towards the centroid
-// of its neighbours, its optimal-Delaunay position (the volume-weighted mean of its tets'
-// circumcentres) or the position that makes its worst tet regular. A move is kept when the
-// worst tet around the point gets better, or else when the sum of its tets' collapses does
-// and the worst stays above min(its value, 0.45); never when a tet inverts (exact orient3d).
+// Smoothing of the free points of a TetDomain (paper §5). A point whose worst tet is below a
+// floor moves towards the centroid of its neighbours, its optimal-Delaunay position (the
+// volume-weighted mean of its tets' circumcentres) or the position that makes its worst tet
+// regular, when that worst tet gets better. Otherwise (and for every point at or above the
+// floor) it moves along the gradient of the sum of its tets' collapses, or towards the ODT
+// position or the centroid, when that sum rises and the worst tet stays at or above
+// min(its value, floor); never when a tet inverts (exact orient3d).
 // Front points [0, front_points) never move; the topology does not change.
 //
 // Parallel and deterministic: points are greedily coloured in index order so that no two
@@ -23,13 +25,13 @@ struct SmoothingCounts {
 
 // `sweeps` sweeps over the free points whose worst tet is below `threshold`; a move must raise
 // the worst collapse around the point by more than min_gain, or the sum of the collapses around
-// it by more than min_gain per tet. The first sweep tries the points with active[p] set (all
-// when active is nullptr), each later one only the points with a moved point in their star
+// it by more than min_gain per tet (`floor` as above). The first sweep tries the points with
+// active[p] set (all when active is nullptr), each later one only the points with a moved point in their star
 // (the others would meet the same star again). After them (when sweeps > 0) come up to three
 // polish sweeps over the points near a moved point whose worst tet was below 0.35, with finer
 // steps and more targets: those few stars decide the minimum. A moved point gets
 // changed[p] = 1 (one flag per point). The domain has no free slots.
-SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain,
+SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed);
 
 }  // namespace tubemesh::tets

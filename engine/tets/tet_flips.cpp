@@ -17,12 +17,15 @@ bool all_positive(const TetDomain& dom, const FlipPlan& plan) {
     return true;
 }
 
-double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count) {
-    double q = std::numeric_limits<double>::infinity();
+double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count, double* sum = nullptr) {
+    double q = std::numeric_limits<double>::infinity(), total = 0;
     for (int i = 0; i < count; ++i) {
         const index_t* v = dom.tets.vertex(tets[i]);
-        q = std::min(q, collapse_of(dom, v[0], v[1], v[2], v[3]));
+        const double x = collapse_of(dom, v[0], v[1], v[2], v[3]);
+        q = std::min(q, x);
+        total += x;
     }
+    if (sum) *sum = total;
     return q;
 }
 
@@ -59,9 +62,14 @@ bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan) {
     plan.new_tets[0] = {a, b, e, d};
     plan.new_tets[1] = {b, c, e, d};
     plan.new_tets[2] = {c, a, e, d};
-    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), 2);
+    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), 2, &plan.old_sum);
     plan.new_min = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < 3; ++j) plan.new_min = std::min(plan.new_min, collapse_of(dom, plan.new_tets[j]));
+    plan.new_sum = 0;
+    for (int j = 0; j < 3; ++j) {
+        const double q = collapse_of(dom, plan.new_tets[j]);
+        plan.new_min = std::min(plan.new_min, q);
+        plan.new_sum += q;
+    }
     return plan.new_min > 0 && all_positive(dom, plan);
 }
 
@@ -71,7 +79,8 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
     if (!edge_shell(dom, t, la, lb, std::min(max_ring, EdgeShell::kMaxSize), shell)) return false;
     const int n = shell.size;
     if (n < 3) return false;
-    const double old_min = min_collapse_of_tets(dom, shell.tets.data(), n);
+    double old_sum = 0;
+    const double old_min = min_collapse_of_tets(dom, shell.tets.data(), n, &old_sum);
     // Triangulations at or below the bound are of no use to the caller: the search skips them
     // (a sub-polygon no better than the bound keeps the bound as its value, which then loses).
     const double bound = std::max(must_exceed, old_min + gain);
@@ -107,6 +116,7 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
     plan.old_count = n;
     std::copy_n(shell.tets.begin(), n, plan.old_tets.begin());
     plan.old_min = old_min;
+    plan.old_sum = old_sum;
     plan.new_min = best[0][n - 1];
     if (!(plan.new_min > bound)) return false;
     plan.new_count = 0;
@@ -122,6 +132,8 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
         stack[top++] = {i, k};
         stack[top++] = {k, j};
     }
+    plan.new_sum = 0;
+    for (int j = 0; j < plan.new_count; ++j) plan.new_sum += collapse_of(dom, plan.new_tets[j]);
     return plan.new_min > 0 && all_positive(dom, plan);
 }
 

@@ -34,6 +34,7 @@ struct FlipPlan {
     std::array<std::array<index_t, 4>, kMaxNew> new_tets{};  // positively oriented
     double old_min = 0;  // smallest collapse of the tets removed
     double new_min = 0;  // smallest collapse of the tets created
+    double old_sum = 0, new_sum = 0;  // sums of the collapses of the tets removed and created
 
     // New slots the move needs beyond the ones it frees (negative when it frees one).
     int extra_slots() const { return new_count - old_count; }

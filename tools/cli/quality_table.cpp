@@ -9,7 +9,7 @@ namespace {
 void add_measure_rows(std::string& out, const char* kind, const char* measure, const MeasureSummary& m,
                       bool with_count, double seconds = -1) {
     if (with_count) out += fmt::format("{:<18} {:<14} {:>12}\n", kind, "Num. element", m.count);
-    if (with_count && seconds >= 0) out += fmt::format("{:<18} {:<14} {:>10.3f} s\n", "", "CPU Time", seconds);
+    if (with_count && seconds >= 0) out += fmt::format("{:<18} {:<14} {:>10.3f} s\n", "", "Wall time", seconds);
     if (m.count == 0) return;
     out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Min. {}", measure), m.min);
     out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Avg. {}", measure), m.mean);

@@ -16,8 +16,9 @@ struct KindTimes {
     double tet = -1, pyramid = -1, hex = -1;
 };
 
-// Table 1 of a meshing run: as above with a "CPU Time" row per kind, then the total time
-// and elements per second (all cells over the total).
+// Table 1 of a meshing run: as above with a "Wall time" row per kind (the paper's row says CPU
+// time; a parallel run is measured by the clock on the wall), then the total time and
+// elements per second (all cells over the total).
 std::string format_run_table(const QualitySummary& q, index_t nodes, const KindTimes& times, double total_seconds);
 nlohmann::json quality_json(const QualitySummary& q);
 

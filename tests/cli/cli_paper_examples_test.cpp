@@ -4,11 +4,12 @@
 // printed, Gmsh reopens the .msh with the same counts and groups, the hex and pyramid bars
 // hold, and the element total is within a factor 2 of the paper's.
 //
-// One source, two executables: test_cli_paper_examples (CI) runs everything that holds today;
-// test_cli_paper_examples_gaps (TUBEMESH_PAPER_GAPS, labels heavy and known_gap) the element
-// count of paper-ex2 (33 k against the paper's 9,412: the paper's rings are far coarser than
-// issue 4's defaults of 8 nodes around and an axial aspect of 1.5 allow; see the closing note
-// of 2026-12-02). The tet collapse bars are tracked in test_tets_pipeline_gaps.
+// One source, two executables: test_cli_paper_examples (CI) runs everything that holds today,
+// the tet collapse minimum of 0.30 included; test_cli_paper_examples_gaps (TUBEMESH_PAPER_GAPS,
+// labels heavy and known_gap) what does not yet: the mean tet collapse of 0.80 (issue 8) on all
+// three, and the element count of paper-ex2 (33 k against the paper's 9,412: the paper's rings
+// are far coarser than issue 4's defaults of 8 nodes around and an axial aspect of 1.5 allow;
+// see the closing note of 2026-12-02).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -100,14 +101,14 @@ TEST_P(PaperExample, MeshesEndToEndIsReportedReopenedAndMeetsTheBars) {
     EXPECT_EQ(seen["elements"].get<testing::Counts>(), testing::gmsh_counts(r.mesh));
     EXPECT_EQ(seen["physical"], testing::physical_groups(r.mesh));
 
-    // Issue 4's and 6's bars (issue 8's tet bars: test_tets_pipeline_gaps).
+    // Issue 4's, 6's and 8's bars (issue 8's mean collapse of 0.80, not met yet: the _gaps build).
     const json& quality = r.report["quality"];
     ASSERT_TRUE(quality.is_object());
     EXPECT_GE(quality["hex_scaled_jacobian"]["min"].get<double>(), 0.5);
     EXPECT_LE(quality["hex_condition"]["max"].get<double>(), 4.0);
     EXPECT_GE(quality["pyramid_scaled_jacobian"]["min"].get<double>(), 0.45);
     EXPECT_GE(quality["pyramid_scaled_jacobian"]["mean"].get<double>(), 0.80);
-    EXPECT_GT(quality["tet_collapse"]["min"].get<double>(), 0.0);
+    EXPECT_GE(quality["tet_collapse"]["min"].get<double>(), 0.30);  // so none below 0.20 either
 
     // Within a factor 2 of the paper's total, except where that is a known gap (paper-ex2).
     if (std::string(GetParam().preset) != "paper-ex2") {
@@ -118,11 +119,19 @@ TEST_P(PaperExample, MeshesEndToEndIsReportedReopenedAndMeetsTheBars) {
 
 #else
 
-TEST_P(PaperExample, ElementTotalWithinAFactorTwoOfThePaper) {
+class PaperExampleCount : public PaperExample {};
+
+TEST_P(PaperExampleCount, ElementTotalWithinAFactorTwoOfThePaper) {
     const ExampleRun& r = run(GetParam());
     ASSERT_FALSE(r.report.is_null());
     EXPECT_LE(total(r.report), 2 * GetParam().paper_total);
     EXPECT_GE(total(r.report), 0.5 * GetParam().paper_total);
+}
+
+TEST_P(PaperExample, TetMeanCollapseReachesThePapers) {
+    const ExampleRun& r = run(GetParam());
+    ASSERT_FALSE(r.report.is_null());
+    EXPECT_GE(r.report["quality"]["tet_collapse"]["mean"].get<double>(), 0.80);
 }
 
 #endif
@@ -137,7 +146,8 @@ std::string name(const ::testing::TestParamInfo<Example>& info) {
 #ifndef TUBEMESH_PAPER_GAPS
 INSTANTIATE_TEST_SUITE_P(Paper, PaperExample, ::testing::ValuesIn(kExamples), name);
 #else
-INSTANTIATE_TEST_SUITE_P(Paper, PaperExample, ::testing::Values(kExamples[1]), name);
+INSTANTIATE_TEST_SUITE_P(Paper, PaperExample, ::testing::ValuesIn(kExamples), name);
+INSTANTIATE_TEST_SUITE_P(Paper, PaperExampleCount, ::testing::Values(kExamples[1]), name);
 #endif
 
 }  // namespace

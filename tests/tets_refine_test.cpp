@@ -15,10 +15,12 @@
 #include "engine/delaunay/triangulation.hpp"
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/tets/boundary_recovery.hpp"
 #include "engine/tets/control_space.hpp"
+#include "engine/tets/interior_points.hpp"
 #include "engine/tets/refine.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 
@@ -313,6 +315,187 @@ TEST(Refine, RecoveredCubeWithHole) {
     const double v0 = domain_volume(d);
     EXPECT_NEAR(v0, 1.0 - 0.3 * 0.3 * 0.3, 1e-9);
     check_refinement(std::move(d), "cube with hole (recovered)");
+}
+
+TEST(ControlSpace, SmallestSizeBoundsEveryQuery) {
+    const TetDomain d = l_domain();
+    const ControlSpace cs(d);
+    double smallest = cs.far_size();
+    for (index_t v = 0; v < d.front_points; ++v) smallest = std::min(smallest, cs.node_size(v));
+    EXPECT_EQ(cs.smallest_size(), smallest);
+    std::uint32_t seed = 12345;
+    const auto uniform = [&seed](double lo, double hi) {
+        seed = seed * 1664525u + 1013904223u;
+        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
+    };
+    for (int i = 0; i < 2000; ++i) {
+        const double p[3] = {uniform(-0.5, 2.5), uniform(-0.5, 2.5), uniform(-0.5, 1.5)};
+        const double h = cs.size(p);
+        EXPECT_GE(h, cs.smallest_size());
+        EXPECT_LE(h, cs.far_size());
+    }
+}
+
+// nearest_unordered, which the size field uses, finds the same points as nearest() (heap
+// buffers above 32, and k above the point count, included).
+TEST(PointIndexUnordered, SameSetAsNearest) {
+    std::uint32_t seed = 99;
+    const auto uniform = [&seed]() {
+        seed = seed * 1664525u + 1013904223u;
+        return (seed >> 8) / double(1u << 24);
+    };
+    std::vector<double> x(500), y(500), z(500);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = uniform(), y[i] = uniform(), z[i] = std::round(8 * uniform()) / 8;
+    const PointIndex index(x, y, z);
+    std::vector<Neighbor> want;
+    for (index_t k : {1u, 8u, 40u, 600u})
+        for (int q = 0; q < 50; ++q) {
+            const Vec3 p{uniform(), uniform(), uniform()};
+            index.nearest(p, k, want);
+            std::vector<index_t> idx(k);
+            std::vector<double> d2(k);
+            const index_t found = index.nearest_unordered(p, k, idx.data(), d2.data());
+            ASSERT_EQ(found, want.size());
+            std::vector<Neighbor> got;
+            for (index_t i = 0; i < found; ++i) got.push_back({idx[i], d2[i]});
+            std::sort(got.begin(), got.end(), [](const Neighbor& a, const Neighbor& b) {
+                return a.distance_squared < b.distance_squared || (a.distance_squared == b.distance_squared && a.index < b.index);
+            });
+            EXPECT_EQ(got, want) << "k " << k;
+        }
+}
+
+// The size field is its documented formula over the front nodes nearest to the query.
+TEST(ControlSpace, SizeIsTheGradedMinimumOverTheNearestNodes) {
+    const TetDomain d = l_domain();
+    ControlSpaceOptions o;
+    o.far_size = 0.4;
+    o.gradation = 1.5;
+    o.neighbours = 8;
+    const ControlSpace cs(d, o);
+    std::vector<double> x, y, z;
+    for (index_t v = 0; v < d.front_points; ++v) x.push_back(d.point(v)[0]), y.push_back(d.point(v)[1]), z.push_back(d.point(v)[2]);
+    const PointIndex front(x, y, z);
+    std::vector<Neighbor> near;
+    std::uint32_t seed = 5;
+    const auto uniform = [&seed](double lo, double hi) {
+        seed = seed * 1664525u + 1013904223u;
+        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
+    };
+    for (int i = 0; i < 1000; ++i) {
+        const double p[3] = {uniform(0, 2), uniform(0, 2), uniform(0, 1)};
+        front.nearest({p[0], p[1], p[2]}, 8, near);
+        double want = o.far_size;
+        for (const Neighbor& q : near) want = std::min(want, cs.node_size(q.index) + 0.5 * std::sqrt(q.distance_squared));
+        EXPECT_EQ(cs.size(p), want);
+    }
+}
+
+// tet_too_big answers from the size-field bounds where it can: the same answers as asking h at
+// the centroid for every tet, on tolerances that make the bounds decide many of them.
+TEST(RefineSizeTest, BoundsGiveTheSameAnswers) {
+    const TetDomain d = l_domain();
+    ControlSpaceOptions co;
+    co.far_size = 0.3;
+    const ControlSpace cs(d, co);
+    const MeshView view{d.tets, d.xyz};
+    int decided_big = 0, decided_small = 0;
+    for (double tolerance : {0.3, 0.8, 1.3, 3.0})
+        for (index_t t = 0; t < d.tets.size(); ++t) {
+            const index_t* v = d.tets.vertex(t);
+            Vec3 p[4];
+            for (int i = 0; i < 4; ++i) p[i] = {d.point(v[i])[0], d.point(v[i])[1], d.point(v[i])[2]};
+            double sum = 0;
+            for (int e = 0; e < 6; ++e) sum += norm(p[kTetTopology.edge[e].a] - p[kTetTopology.edge[e].b]);
+            const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+            const double q[3] = {c.x, c.y, c.z};
+            const bool want = sum / 6.0 > tolerance * cs.size(q);
+            EXPECT_EQ(tet_too_big(view, t, cs, tolerance), want) << "tet " << t << " tolerance " << tolerance;
+            decided_big += sum / 6.0 > tolerance * cs.far_size();
+            decided_small += !(sum / 6.0 > tolerance * cs.smallest_size());
+        }
+    EXPECT_GT(decided_big, 0);
+    EXPECT_GT(decided_small, 0);
+}
+
+// Rounds of refinement by hand through the kernel: with the memos, each round's active faces
+// and candidates are exactly those computed from scratch, while unchanged tets are not tested
+// again and unchanged active faces reuse their ideal points.
+TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
+    TetDomain d = l_domain();
+    const ControlSpace cs(d);
+    delaunay::Triangulation tri;
+    tri.adopt(d.xyz, std::move(d.tets));
+    std::vector<double> xyz = d.xyz;
+    TooBigMemo big;
+    ProposalMemo proposals;
+    std::uint64_t fewer_tests = 0;
+    for (int round = 0; round < 4; ++round) {
+        const MeshView view{tri.store(), xyz};
+        index_t live = 0;
+        for (index_t t = 0; t < tri.store().size(); ++t) live += tri.store().vertex(t)[0] != delaunay::kFreeSlot;
+        const std::uint64_t tests_before = big.tests;
+        const std::vector<index_t> faces = active_faces(view, cs, 1.3, big);
+        ASSERT_EQ(faces, active_faces(view, cs, 1.3)) << "round " << round;
+        if (round > 0) fewer_tests += live - (big.tests - tests_before);
+        if (faces.empty()) break;
+        const std::vector<Candidate> got = propose_points(view, faces, cs, proposals);
+        const std::vector<Candidate> want = propose_points(view, faces, cs);
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            EXPECT_TRUE(std::equal(got[i].p, got[i].p + 3, want[i].p)) << "round " << round << " candidate " << i;
+            EXPECT_EQ(got[i].h, want[i].h);
+            EXPECT_EQ(got[i].tet, want[i].tet);
+        }
+        // Insert every other kept candidate, so that some active faces stay as they were.
+        const std::vector<index_t> keep = select_points(got, xyz, 0.7);
+        std::vector<double> add;
+        std::vector<index_t> ids;
+        for (std::size_t k = 0; k < keep.size(); k += 2) {
+            const Candidate& c = got[keep[k]];
+            ids.push_back(tri.point_count() + static_cast<index_t>(ids.size()));
+            add.insert(add.end(), c.p, c.p + 3);
+        }
+        if (ids.empty()) break;
+        tri.add_points(add, ids);
+        xyz.insert(xyz.end(), add.begin(), add.end());
+        for (std::size_t k = 0; k < ids.size(); ++k) tri.set_walk_start(ids[k], got[keep[2 * k]].tet);
+        tri.reserve_tets(std::size_t{tri.store().size()} + 8 * ids.size() + 1024);
+        tri.insert(ids, 1, 1);
+    }
+    EXPECT_GT(fewer_tests, 0u);
+    EXPECT_GT(proposals.reused_total.load(), 0u);
+}
+
+// select_points against the greedy rule it documents, evaluated directly on random candidates.
+TEST(SelectPoints, SameAsDirectGreedy) {
+    std::uint32_t seed = 7;
+    const auto uniform = [&seed](double lo, double hi) {
+        seed = seed * 1664525u + 1013904223u;
+        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
+    };
+    std::vector<Candidate> cand(3000);
+    for (Candidate& c : cand) c = {{uniform(0, 1), uniform(0, 1), uniform(0, 1)}, uniform(0.05, 0.15), 0};
+    std::vector<double> existing(3 * 400);
+    for (double& x : existing) x = uniform(0, 1);
+    const double factor = 0.7;
+    const auto close = [](const double* a, const double* b, double r) {
+        const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+        return dx * dx + dy * dy + dz * dz < r * r;
+    };
+    std::vector<index_t> want;
+    for (std::size_t i = 0; i < cand.size(); ++i) {
+        const double r = factor * cand[i].h;
+        bool clash = false;
+        for (std::size_t j = 0; j < existing.size() && !clash; j += 3) clash = close(cand[i].p, &existing[j], r);
+        for (index_t j : want)
+            if (!clash) clash = close(cand[i].p, cand[j].p, r);
+        if (!clash) want.push_back(static_cast<index_t>(i));
+    }
+    const std::vector<index_t> got = select_points(cand, existing, factor);
+    EXPECT_EQ(got, want);
+    EXPECT_GT(want.size(), 100u);
+    EXPECT_LT(want.size(), cand.size() / 2);
 }
 
 // The kernel alone: a point just inside a front face keeps that face; points outside the

@@ -49,29 +49,23 @@ index_t PointIndex::size() const { return static_cast<index_t>(impl_->cloud.x.si
 void PointIndex::nearest(const Vec3& query, index_t k, std::vector<Neighbor>& out) const {
     out.clear();
     if (k == 0 || size() == 0) return;
-    const double q[3] = {query.x, query.y, query.z};
+    const std::size_t want = std::min<std::size_t>(k, size());
+    NearestBuffer buffer(static_cast<index_t>(want));
+    index_t* idx = buffer.index();
+    double* d2 = buffer.distance_squared();
+    const index_t found = nearest_unordered(query, k, idx, d2);
+    out.resize(found);
+    for (index_t i = 0; i < found; ++i) out[i] = {idx[i], d2[i]};
     // nanoflann's own order among equal distances depends on the tree layout: re-sort by
     // (distance, index) so callers see one documented order.
-    const std::size_t want = std::min<std::size_t>(k, size());
-    // Small k, the common case (the tet step's size field asks for 8 on every query), uses
-    // buffers on the stack: no heap allocation per query.
-    constexpr std::size_t kOnStack = 32;
-    index_t idx_stack[kOnStack];
-    double d2_stack[kOnStack];
-    std::vector<index_t> idx_heap;
-    std::vector<double> d2_heap;
-    index_t* idx = idx_stack;
-    double* d2 = d2_stack;
-    if (want > kOnStack) {
-        idx_heap.resize(want);
-        d2_heap.resize(want);
-        idx = idx_heap.data();
-        d2 = d2_heap.data();
-    }
-    const std::size_t found = impl_->tree.knnSearch(q, want, idx, d2);
-    out.resize(found);
-    for (std::size_t i = 0; i < found; ++i) out[i] = {idx[i], d2[i]};
     std::sort(out.begin(), out.end(), closer);
+}
+
+index_t PointIndex::nearest_unordered(const Vec3& query, index_t k, index_t* idx, double* distance_squared) const {
+    if (k == 0 || size() == 0) return 0;
+    const double q[3] = {query.x, query.y, query.z};
+    const std::size_t want = std::min<std::size_t>(k, size());
+    return static_cast<index_t>(impl_->tree.knnSearch(q, want, idx, distance_squared));
 }
 
 void PointIndex::within(const Vec3& query, double radius, std::vector<Neighbor>& out) const {

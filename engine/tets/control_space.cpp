@@ -46,6 +46,8 @@ ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& o
     for (index_t i = 0; i < n; ++i)
         if (!count[i]) node_size_[i] = largest;
     far_size_ = options.far_size > 0 ? options.far_size : largest;
+    // size() is a min of far_size_ and node_size_[i] + (non-negative): never below this.
+    smallest_size_ = std::min(far_size_, *std::min_element(node_size_.begin(), node_size_.end()));
     slope_ = options.gradation - 1.0;
     neighbours_ = std::max<index_t>(options.neighbours, 1);
     index_ = std::make_unique<PointIndex>(x_, y_, z_);
@@ -54,10 +56,13 @@ ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& o
 ControlSpace::~ControlSpace() = default;
 
 double ControlSpace::size(const double* p) const {
-    thread_local std::vector<Neighbor> near;
-    index_->nearest({p[0], p[1], p[2]}, neighbours_, near);
+    // The minimum does not depend on the order of the neighbours: skip nearest()'s sort.
+    NearestBuffer buffer(neighbours_);
+    index_t* idx = buffer.index();
+    double* d2 = buffer.distance_squared();
+    const index_t found = index_->nearest_unordered({p[0], p[1], p[2]}, neighbours_, idx, d2);
     double h = far_size_;
-    for (const Neighbor& q : near) h = std::min(h, node_size_[q.index] + slope_ * std::sqrt(q.distance_squared));
+    for (index_t i = 0; i < found; ++i) h = std::min(h, node_size_[idx[i]] + slope_ * std::sqrt(d2[i]));
     return h;
 }
 

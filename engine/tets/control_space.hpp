@@ -35,11 +35,14 @@ public:
     // Local size of front node i (mean incident front edge length).
     double node_size(index_t i) const { return node_size_[i]; }
     double far_size() const { return far_size_; }
+    // No size() result is below this: min(far size, smallest node size).
+    double smallest_size() const { return smallest_size_; }
 
 private:
     std::vector<double> x_, y_, z_;  // front nodes, read in place by the index
     std::vector<double> node_size_;
     double far_size_ = 0;
+    double smallest_size_ = 0;
     double slope_ = 0;
     index_t neighbours_ = 8;
     std::unique_ptr<PointIndex> index_;

@@ -1,9 +1,13 @@
 #include "engine/tets/interior_points.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
@@ -59,18 +63,46 @@ bool tet_too_big(const MeshView& m, index_t tet, const ControlSpace& space, doub
     const Vec3 p[4] = {at(m, v[0]), at(m, v[1]), at(m, v[2]), at(m, v[3])};
     double sum = 0;
     for (int e = 0; e < 6; ++e) sum += norm(p[kTetTopology.edge[e].a] - p[kTetTopology.edge[e].b]);
+    const double mean = sum / 6.0;
+    // h lies in [smallest_size, far_size] (as computed, not only in exact arithmetic): outside
+    // that band the answer needs no nearest-node query.
+    if (mean > tolerance * space.far_size()) return true;
+    if (!(mean > tolerance * space.smallest_size())) return false;
     const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
     const double q[3] = {c.x, c.y, c.z};
-    return sum / 6.0 > tolerance * space.size(q);
+    return mean > tolerance * space.size(q);
 }
 
 std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, double tolerance) {
+    TooBigMemo memo;
+    return active_faces(m, space, tolerance, memo);
+}
+
+std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, double tolerance, TooBigMemo& memo) {
     const index_t n = m.tets.size();
-    std::vector<std::uint8_t> big(n, 0);
+    if (memo.ids.size() < n) {
+        memo.ids.resize(n, {kFreeSlot, kFreeSlot, kFreeSlot, kFreeSlot});
+        memo.big.resize(n, 0);
+    }
+    std::atomic<std::uint64_t> tests{0};
     tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
-        for (index_t t = r.begin(); t < r.end(); ++t)
-            if (m.tets.vertex(t)[0] != kFreeSlot) big[t] = tet_too_big(m, t, space, tolerance) ? 1 : 0;
+        std::uint64_t made = 0;
+        for (index_t t = r.begin(); t < r.end(); ++t) {
+            const index_t* v = m.tets.vertex(t);
+            std::array<index_t, 4>& known = memo.ids[t];
+            if (v[0] == kFreeSlot) {
+                known[0] = kFreeSlot;
+                memo.big[t] = 0;
+            } else if (!std::equal(v, v + 4, known.begin())) {
+                memo.big[t] = tet_too_big(m, t, space, tolerance) ? 1 : 0;
+                std::copy_n(v, 4, known.begin());
+                ++made;
+            }
+        }
+        tests.fetch_add(made, std::memory_order_relaxed);
     });
+    memo.tests += tests.load();
+    const std::vector<std::uint8_t>& big = memo.big;
     std::vector<index_t> faces;
     for (index_t t = 0; t < n; ++t) {
         if (!big[t]) continue;
@@ -83,39 +115,72 @@ std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, 
 }
 
 std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space) {
+    ProposalMemo memo;
+    return propose_points(m, faces, space, memo);
+}
+
+std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space,
+                                      ProposalMemo& memo) {
+    constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<ProposalMemo::Entry>& before = memo.entries;
+    std::vector<ProposalMemo::Entry> now(faces.size());
     std::vector<Candidate> out(faces.size());
-    std::vector<std::uint8_t> ok(faces.size(), 0);
+    std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::uint64_t reused = 0;
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
             const index_t t = faces[i] >> 2, f = faces[i] & 3;
             const index_t* v = m.tets.vertex(t);
-            const auto& node = kTetTopology.face[f].node;
-            const Vec3 a = at(m, v[node[0]]), b = at(m, v[node[1]]), c = at(m, v[node[2]]);
-            const Vec3 g = (1.0 / 3.0) * (a + b + c);
-            const Vec3 outward = cross(b - a, c - a);  // out of t
-            const double len = norm(outward);
-            if (!(len > 0)) continue;
-            const double gq[3] = {g.x, g.y, g.z};
-            const double rho2 = (distance2(g, a) + distance2(g, b) + distance2(g, c)) / 3.0;
-            // Apex at distance h from the face's vertices when the face allows it.
-            const auto apex = [&](double h) {
-                return g - (std::sqrt(std::max(h * h - rho2, 0.25 * h * h)) / len) * outward;
-            };
-            // h where the new tet will be (halfway to the apex), not at the face: in a graded
-            // field the face's own size is too small for the tet it starts. On the paper's
-            // examples this raised the mean collapse by 0.001-0.007 and cut refinement rounds
-            // from 9-10 to 6 (2026-12-02).
-            const Vec3 first = apex(space.size(gq));
-            const Vec3 mid = 0.5 * (g + first);
-            const double mq[3] = {mid.x, mid.y, mid.z};
-            const Vec3 p = apex(space.size(mq));
-            const double pp[3] = {p.x, p.y, p.z};
-            const index_t holder = walk_to(m, t, pp, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
+            ProposalMemo::Entry& e = now[i];
+            e.face = faces[i];
+            std::copy_n(v, 4, e.ids.begin());
+            const auto hit = std::lower_bound(before.begin(), before.end(), faces[i],
+                                              [](const ProposalMemo::Entry& x, index_t code) { return x.face < code; });
+            if (hit != before.end() && hit->face == faces[i] && hit->ids == e.ids) {
+                e = *hit;
+                ++reused;
+            } else {
+                const auto& node = kTetTopology.face[f].node;
+                const Vec3 a = at(m, v[node[0]]), b = at(m, v[node[1]]), c = at(m, v[node[2]]);
+                const Vec3 g = (1.0 / 3.0) * (a + b + c);
+                const Vec3 outward = cross(b - a, c - a);  // out of t
+                const double len = norm(outward);
+                if (!(len > 0)) continue;
+                const double gq[3] = {g.x, g.y, g.z};
+                const double rho2 = (distance2(g, a) + distance2(g, b) + distance2(g, c)) / 3.0;
+                // Apex at distance h from the face's vertices when the face allows it.
+                const auto apex = [&](double h) {
+                    return g - (std::sqrt(std::max(h * h - rho2, 0.25 * h * h)) / len) * outward;
+                };
+                // h where the new tet will be (halfway to the apex), not at the face: in a graded
+                // field the face's own size is too small for the tet it starts. On the paper's
+                // examples this raised the mean collapse by 0.001-0.007 and cut refinement rounds
+                // from 9-10 to 6 (2026-12-02).
+                const Vec3 first = apex(space.size(gq));
+                const Vec3 mid = 0.5 * (g + first);
+                const double mq[3] = {mid.x, mid.y, mid.z};
+                const Vec3 p = apex(space.size(mq));
+                e.p[0] = p.x;
+                e.p[1] = p.y;
+                e.p[2] = p.z;
+                e.h = kUnknown;
+            }
+            known[i] = 1;
+            const index_t holder = walk_to(m, t, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
             if (holder == kNoIndex) continue;
-            out[i] = {{p.x, p.y, p.z}, space.size(pp), holder};
+            // h at the point only for points that may be inserted (most walks succeed).
+            if (std::isnan(e.h)) e.h = space.size(e.p);
+            out[i] = {{e.p[0], e.p[1], e.p[2]}, e.h, holder};
             ok[i] = 1;
         }
+        memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
     });
+    // Faces come in increasing order, so the entries stay sorted for the next round's search.
+    std::vector<ProposalMemo::Entry> entries;
+    entries.reserve(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        if (known[i]) entries.push_back(now[i]);
+    memo.entries.swap(entries);
     std::vector<Candidate> kept;
     kept.reserve(faces.size());
     for (std::size_t i = 0; i < faces.size(); ++i)
@@ -137,29 +202,37 @@ std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const
         cy[i] = c[i].p[1];
         cz[i] = c[i].p[2];
     }
-    // Far enough from existing points: independent per candidate, parallel.
-    std::vector<std::uint8_t> free_of_points(n, 0);
-    if (n) {
-        const PointIndex points(ex, ey, ez);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-            std::vector<Neighbor> near;
-            for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                points.within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
-                free_of_points[i] = near.empty() ? 1 : 0;
-            }
-        });
-    }
-    // Among candidates: greedy in order, so earlier ones win whatever the thread count.
     std::vector<index_t> kept;
     if (!n) return kept;
-    const PointIndex cands(cx, cy, cz);
+    // The two trees are independent and each build is serial: build them side by side.
+    std::optional<PointIndex> points, cands;
+    tbb::parallel_invoke([&] { points.emplace(ex, ey, ez); }, [&] { cands.emplace(cx, cy, cz); });
+    // Far enough from existing points: independent per candidate, parallel.
+    std::vector<std::uint8_t> free_of_points(n, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<Neighbor> near;
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            points->within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+            free_of_points[i] = near.empty() ? 1 : 0;
+        }
+    });
+    // Among candidates: greedy in order, so earlier ones win whatever the thread count. The
+    // queries are independent (each candidate's earlier neighbours that passed the first test),
+    // so they run in parallel; only the greedy pass over those short lists is serial.
+    std::vector<std::vector<index_t>> earlier(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<Neighbor> near;
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            if (!free_of_points[i]) continue;
+            cands->within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+            for (const Neighbor& q : near)
+                if (q.index < i && free_of_points[q.index]) earlier[i].push_back(q.index);
+        }
+    });
     std::vector<std::uint8_t> taken(n, 0);
-    std::vector<Neighbor> near;
     for (std::size_t i = 0; i < n; ++i) {
         if (!free_of_points[i]) continue;
-        cands.within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
-        const bool clash = std::any_of(near.begin(), near.end(), [&](const Neighbor& q) { return taken[q.index] != 0; });
-        if (clash) continue;
+        if (std::any_of(earlier[i].begin(), earlier[i].end(), [&](index_t j) { return taken[j] != 0; })) continue;
         taken[i] = 1;
         kept.push_back(static_cast<index_t>(i));
     }

@@ -1,6 +1,11 @@
 #pragma once
 // Advancing-front interior points (paper §5): ideal points proposed on the active front and
 // filtered by the size field. Pure functions of the mesh state: refine.cpp inserts the result.
+// The memo overloads carry what an unchanged tet or face would recompute from one round to the
+// next; they return exactly what the plain ones do (tests/tets_refine_test.cpp checks this).
+#include <array>
+#include <atomic>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -31,11 +36,46 @@ bool tet_too_big(const MeshView& mesh, index_t tet, const ControlSpace& space, d
 // is not too big (the front of the resolved region), in increasing order. Parallel.
 std::vector<index_t> active_faces(const MeshView& mesh, const ControlSpace& space, double tolerance);
 
+// tet_too_big's answers kept from one round to the next, per tet slot with the slot's four point
+// ids in order: points never move during refinement and the size field is fixed, so a slot whose
+// ids are unchanged has the same answer, and a round only tests the tets the kernel made. Valid
+// for one point array (appended to only), one ControlSpace and one tolerance.
+struct TooBigMemo {
+    std::vector<std::array<index_t, 4>> ids;  // ids[t][0] == kFreeSlot: slot t not tested yet
+    std::vector<std::uint8_t> big;            // the answer for ids[t]
+    std::uint64_t tests = 0;                  // tet_too_big calls made through the memo
+};
+
+// active_faces with the answers of earlier rounds reused (and this round's stored) in `memo`;
+// the same faces as without it.
+std::vector<index_t> active_faces(const MeshView& mesh, const ControlSpace& space, double tolerance,
+                                  TooBigMemo& memo);
+
 // One ideal point per active face: the apex of a near-regular tet of size h on the face, on
 // the side of the face's tet; dropped when a walk from that tet leaves the region through the
 // front. Parallel; the order follows `faces`.
 std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const index_t> faces,
                                       const ControlSpace& space);
+
+// Ideal points of the previous round's active faces, by face code 4*t+f with t's point ids in
+// order: the ideal point and its h depend only on those, so a face that is active again in an
+// unchanged tet reuses them (its walk to the holding tet, which depends on the mesh, is redone).
+// Valid for one point array (appended to only) and one ControlSpace.
+struct ProposalMemo {
+    struct Entry {
+        index_t face;
+        std::array<index_t, 4> ids;
+        double p[3];
+        double h;  // NaN until asked for
+    };
+    std::vector<Entry> entries;  // increasing face
+    std::atomic<std::uint64_t> reused_total{0};  // faces that reused an entry
+};
+
+// propose_points with the ideal points of the previous call reused from `memo` (and this call's
+// kept there for the next); the same candidates as without it.
+std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const index_t> faces, const ControlSpace& space,
+                                      ProposalMemo& memo);
 
 // Keeps the candidates farther than `reject_factor` * h from every point in `existing`
 // (3 coordinates each) and from every candidate kept before them (greedy in order, so the

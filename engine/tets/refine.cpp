@@ -57,12 +57,14 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         domain.tets = delaunay::TetStore();
         // Points in the mesh (inserted), for the distance test; kernel ids follow domain.xyz.
         std::vector<double> live(domain.xyz);
+        TooBigMemo memo;
+        ProposalMemo proposals;
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
             const MeshView view{tri.store(), domain.xyz};
-            const std::vector<index_t> faces = active_faces(view, space, options.size_tolerance);
+            const std::vector<index_t> faces = active_faces(view, space, options.size_tolerance, memo);
             stats.too_big_left = static_cast<index_t>(faces.size());
             if (faces.empty()) break;
-            std::vector<Candidate> cand = propose_points(view, faces, space);
+            std::vector<Candidate> cand = propose_points(view, faces, space, proposals);
             stats.candidates += cand.size();
             const std::vector<index_t> keep = select_points(cand, live, options.reject_factor);
             stats.rejected_close += cand.size() - keep.size();
@@ -96,6 +98,8 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 }
             if (added == 0) break;
         }
+        stats.size_tests = memo.tests;
+        stats.proposals_reused = proposals.reused_total.load();
         const delaunay::KernelCounters& k = tri.counters();
         stats.blocked = k.blocked;
         stats.shrunk_cavities = k.shrunk;

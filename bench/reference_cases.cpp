@@ -11,7 +11,7 @@ namespace {
 constexpr ReferenceCase kCases[] = {
     {"paper-ex1", "paper-ex1", 0.6},       {"paper-ex2", "paper-ex2", 1.1},
     {"paper-ex3", "paper-ex3", 40},        {"serpentine-lift", "serpentine-lift", 0},
-    {"large-lift", "serpentine-lift", 0.11},
+    {kLargeLift, "serpentine-lift", 0.11},
 };
 }  // namespace
 

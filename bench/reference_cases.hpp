@@ -1,6 +1,7 @@
 #pragma once
 // The reference cases of issue 10, shared by the per-phase benchmarks (phase_bench.cpp), the
-// whole-pipeline benchmark (pipeline_bench.cpp) and the regression gate (gate_kernels.cpp):
+// whole-pipeline benchmark (pipeline_bench.cpp), the peers' table (tet_step_bench.cpp) and the
+// regression gate (gate_kernels.cpp):
 // the paper's three examples at the sizes of issue 9's acceptance (S = 0.6, 1.1, 40), the
 // serpentine dam lift at its default size, and a large lift (the serpentine lift at S = 0.11:
 // about 6 million elements, minutes per run; its benchmarks carry "large-lift" in their names
@@ -18,6 +19,9 @@
 #include "geom/prepare.hpp"
 
 namespace tubemesh::bench {
+
+// The large lift's name: runs that must stay short leave it out unless it is named.
+inline constexpr char kLargeLift[] = "large-lift";
 
 struct ReferenceCase {
     const char* name;    // benchmark name part: "paper-ex1", ..., "large-lift"

@@ -1,15 +1,18 @@
 // The tet step (paper §5) against TetGen and Gmsh on the same closed front (issue 8), and the
-// peers' table of issue 10, on the dam block (paper-ex1) and the serpentine dam lift.
+// peers' table of issue 10, on the reference cases (bench/reference_cases.hpp: the paper's three
+// examples at the S of issue 9's acceptance, the serpentine lift, the large lift), each case's S
+// the far size of every program.
 //
-// Per case, outside any timed region: the built-in block through prepare_model and the pipeline
-// up to the pyramid layer, which gives the closed front of the tet region (PipelineResult::
-// tet_front). That front is written as a TetGen .smesh and a Gmsh MSH 2.2 surface, the solid
-// as STEP. Then, case by case, in this order:
+// Per case, outside any timed region: the case's block through prepare_model and the pipeline
+// up to the pyramid layer at the case's S, which gives the closed front of the tet region
+// (PipelineResult::tet_front). That front is written as a TetGen .smesh and a Gmsh MSH 2.2
+// surface, the solid as STEP. Then, case by case, in this order:
 //  * TetGen/<case>: `tetgen -pYq1.414 front.smesh` (1 thread).
 //  * GmshFront/<case>: the front as one discrete surface, Surface Loop + Volume, `gmsh -3 -algo
 //    hxt -nt 2 -clmax S` (S: the case's far size, the tet step's far_size).
 //  * GmshSolid/<case> (issue 10): Gmsh all-tet on the CAD solid (the STEP file), HXT, 2
 //    threads, 8 elements per 2π of curvature (-clcurv 8: 8 segments around each hole), -clmax S.
+//    Not run on the large lift (tens of millions of tets): its row says so.
 //  * TetStep/<case>/threads:1 and :2: tets::build_tets on a fresh copy of the pyramid-stage
 //    mesh, TetStepOptions{far_size = S, threads}.
 // Peers run as separate processes (run_program): their time is the wall time of the process
@@ -22,10 +25,10 @@
 // Memory: ours is the peak resident growth during build_tets (VmHWM reset before it), input
 // mesh excluded; a peer's is the peak resident set of its whole process.
 //
-// Own flags (before Google Benchmark's): --cases=a,b (presets; default paper-ex1,serpentine-
-// lift), --peer_limit=seconds (per peer run, default 1800), --table_out=file (default: the
-// --benchmark_out path with .md instead of .json; none without it). The table is printed on
-// stderr, so JSON on stdout stays valid.
+// Own flags (before Google Benchmark's): --cases=a,b (reference case names; default: all but
+// the large lift, which runs only when named), --peer_limit=seconds (per peer run, default
+// 1800), --table_out=file (default: the --benchmark_out path with .md instead of .json; none
+// without it). The table is printed on stderr, so JSON on stdout stays valid.
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -41,10 +44,12 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench/peer_mesh_files.hpp"
 #include "bench/process_measure.hpp"
+#include "bench/reference_cases.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "engine/pipeline/pipeline.hpp"
 #include "engine/quality/quality.hpp"
@@ -64,9 +69,10 @@ using Clock = std::chrono::steady_clock;
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 constexpr int kPeerThreads = 2;  // Gmsh's -nt, as issue 8 asks
 constexpr int kCurvatureElements = 8;
+constexpr char kStepUnit[] = "metre";  // the STEP files' label; Gmsh's OCCTargetUnit "M"
 
 struct Settings {
-    std::vector<std::string> cases{"paper-ex1", "serpentine-lift"};
+    std::vector<std::string> cases;  // reference case names
     double peer_limit_seconds = 1800;
     fs::path table;
 };
@@ -98,12 +104,13 @@ testing::TempDir& temp_dir() {
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-void build_case(TetCase& c) {
-    const geom::BuiltBlock block = geom::build_block(geom::preset_spec(c.name));
+void build_case(TetCase& c, const bench::ReferenceCase& reference) {
+    const geom::BuiltBlock& block = bench::built_block(reference);
+    const MeshOptions options = bench::case_options(reference, kPeerThreads);
     const auto t0 = Clock::now();
-    const geom::PreparedModel prepared = geom::prepare_model(block.model);
-    MeshOptions options;
-    options.threads = kPeerThreads;
+    // Not bench::prepared_case: preparing is part of the whole pipeline's time here, and the
+    // prepared model is freed before the tet step runs.
+    const geom::PreparedModel prepared = geom::prepare_model(block.model, geom::prepare_options(options));
     PipelineResult r = run_pipeline(prepared.pipeline_input(), options, Stage::Pyramids);
     c.seconds_before_tets = seconds_since(t0);
     c.far_size = prepared.geometry.size;
@@ -131,7 +138,16 @@ void build_case(TetCase& c) {
     c.step = c.dir / "block.step";
     bench::write_smesh(front, c.smesh);
     bench::write_msh22_surface(front, c.front_msh);
-    geom::write_step(block.model, c.step);
+    // Gmsh reads the STEP in metres (BM_GmshSolid), so the file must say metre, whatever the
+    // preset's unit label (paper-ex3: millimetre; paper-ex2: model units, which the STEP writer
+    // calls millimetre): the same block built under that label has the same coordinates as ours.
+    if (block.model.report().length_unit == kStepUnit) {
+        geom::write_step(block.model, c.step);
+    } else {
+        geom::BlockSpec spec = geom::preset_spec(reference.preset);
+        spec.length_unit = kStepUnit;
+        geom::write_step(geom::build_block(spec).model, c.step);
+    }
 }
 
 // One case in memory at a time: the benchmarks are registered case by case, so each case is
@@ -143,7 +159,7 @@ const TetCase& tet_case(const std::string& name) {
     auto c = std::make_unique<TetCase>();
     c->name = name;
     try {
-        build_case(*c);
+        build_case(*c, bench::reference_case(name));
     } catch (const std::exception& e) {
         c->error = "case " + name + ": " + e.what();
     }
@@ -380,10 +396,16 @@ void BM_GmshFront(benchmark::State& state, const std::string& name) {
 }
 
 void BM_GmshSolid(benchmark::State& state, const std::string& name) {
+    if (name == bench::kLargeLift) {
+        Row row{name, kGmshSolid, kPeerThreads};
+        row.note = "not run: tens of millions of tets at this S";
+        record(row);
+        return state.SkipWithError(row.note.c_str());
+    }
     const TetCase& c = tet_case(name);
     if (!c.error.empty()) return state.SkipWithError(c.error.c_str());
-    // OpenCASCADE converts STEP lengths to millimetres unless told the target unit; the blocks
-    // are in metres.
+    // OpenCASCADE converts STEP lengths to millimetres unless told the target unit; the STEP
+    // files say metre (build_case), so their coordinates are kept.
     const std::string geo = "SetFactory(\"OpenCASCADE\");\nGeometry.OCCTargetUnit = \"M\";\nMerge " + quoted(c.step) +
                             ";\nPhysical Volume(\"tets\", 1) = {1};\n";
     run_gmsh(state, c, kGmshSolid, "gmsh_solid", geo, {"-clcurv", std::to_string(kCurvatureElements)});
@@ -431,6 +453,7 @@ void BM_TetStep(benchmark::State& state, const std::string& name, unsigned threa
     row.min_collapse = q.min;
     row.mean_collapse = q.mean;
     row.peak_mb = peak_ok ? rss_growth / 1e6 : kNone;
+    row.note = "S = " + number_text(c.far_size);
     record(row);
 
     auto& k = state.counters;
@@ -537,7 +560,8 @@ std::string table_text(const std::string& load_before, const std::string& load_a
     return t.str();
 }
 
-// Takes our own flags out of argv; notes --benchmark_out for the table's default path.
+// Takes our own flags out of argv; notes --benchmark_out for the table's default path. Throws
+// tubemesh::Error for a case name that is no reference case.
 void parse_own_flags(int& argc, char** argv) {
     int kept = 1;
     fs::path json;
@@ -551,7 +575,7 @@ void parse_own_flags(int& argc, char** argv) {
             settings().cases.clear();
             std::istringstream in(*v);
             for (std::string name; std::getline(in, name, ',');)
-                if (!name.empty()) settings().cases.push_back(name);
+                if (!name.empty()) settings().cases.emplace_back(bench::reference_case(name).name);
         } else if (auto v = value("--peer_limit")) {
             settings().peer_limit_seconds = std::atof(v->c_str());
         } else if (auto v = value("--table_out")) {
@@ -562,6 +586,9 @@ void parse_own_flags(int& argc, char** argv) {
         }
     }
     argc = kept;
+    if (settings().cases.empty())
+        for (const bench::ReferenceCase& c : bench::reference_cases())
+            if (std::string_view(c.name) != bench::kLargeLift) settings().cases.emplace_back(c.name);
     if (settings().table.empty() && !json.empty()) settings().table = fs::path(json).replace_extension(".md");
 }
 
@@ -587,7 +614,12 @@ void register_benchmarks() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    parse_own_flags(argc, argv);
+    try {
+        parse_own_flags(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
     register_benchmarks();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -296,4 +296,88 @@ TEST(test_tets_optimise, EdgeRemovalBoundKeepsTheBestPlan) {
     EXPECT_EQ(refused, compared);
 }
 
+// The collapse of every slot, as the flip sweep caches it.
+std::vector<double> slot_collapses(const TetDomain& d) {
+    std::vector<double> q(d.tets.size());
+    for (index_t t = 0; t < d.tets.size(); ++t) q[t] = collapse_of(d, d.tets.vertex(t)[0], d.tets.vertex(t)[1],
+                                                                   d.tets.vertex(t)[2], d.tets.vertex(t)[3]);
+    return q;
+}
+
+// Read from the sweep's cache or computed, the collapses are the same numbers, and a plan's
+// sums are those of its own tets: the cache and the sums the search keeps change nothing.
+TEST(test_tets_optimise, CachedCollapsesGiveTheSamePlans) {
+    const TetDomain d = sphere_domain(200, 800, 7);
+    const std::vector<double> q = slot_collapses(d);
+    int flips23 = 0, removals = 0;
+    const auto sum_of_new = [&](const FlipPlan& p) {
+        double sum = 0;
+        for (int j = 0; j < p.new_count; ++j) sum += collapse_of(d, p.new_tets[j]);
+        return sum;
+    };
+    for (index_t t = 0; t < d.tets.size(); t += 5) {
+        for (int f = 0; f < 4; ++f) {
+            FlipPlan fresh, cached;
+            const bool planned = plan_flip23(d, t, f, fresh);
+            ASSERT_EQ(plan_flip23(d, t, f, cached, q.data()), planned);
+            if (!planned) continue;
+            EXPECT_EQ(cached.old_min, fresh.old_min);
+            EXPECT_EQ(cached.old_sum, fresh.old_sum);
+            EXPECT_EQ(cached.new_sum, sum_of_new(fresh));
+            ++flips23;
+        }
+        for (int a = 0; a < 4; ++a)
+            for (int b = a + 1; b < 4; ++b) {
+                FlipPlan fresh, cached;
+                const bool planned = plan_edge_removal(d, t, a, b, 7, fresh);
+                ASSERT_EQ(plan_edge_removal(d, t, a, b, 7, cached, -1.0, -1.0, q.data()), planned);
+                if (!planned) continue;
+                EXPECT_EQ(cached.old_min, fresh.old_min);
+                EXPECT_EQ(cached.old_sum, fresh.old_sum);
+                EXPECT_EQ(fresh.new_sum, sum_of_new(fresh));
+                EXPECT_EQ(cached.new_sum, fresh.new_sum);
+                ++removals;
+            }
+    }
+    EXPECT_GT(flips23, 50);
+    EXPECT_GT(removals, 50);
+}
+
+// As for edge removal, the 2-3 flip's bound only cuts the search short: a plan above it is
+// the unbounded one, and none at it or within gain of the old tets' worst.
+TEST(test_tets_optimise, Flip23BoundKeepsThePlan) {
+    const TetDomain d = sphere_domain(200, 800, 8);
+    int compared = 0;
+    for (index_t t = 0; t < d.tets.size(); t += 3)
+        for (int f = 0; f < 4; ++f) {
+            FlipPlan free_plan, bounded;
+            if (!plan_flip23(d, t, f, free_plan)) continue;
+            const double just_below = std::nextafter(free_plan.new_min, -1.0);
+            ASSERT_TRUE(plan_flip23(d, t, f, bounded, nullptr, just_below));
+            EXPECT_EQ(bounded.new_min, free_plan.new_min);
+            EXPECT_EQ(bounded.new_sum, free_plan.new_sum);
+            for (int j = 0; j < 3; ++j) EXPECT_EQ(bounded.new_tets[j], free_plan.new_tets[j]);
+            EXPECT_FALSE(plan_flip23(d, t, f, bounded, nullptr, free_plan.new_min));
+            const double gain = free_plan.new_min - free_plan.old_min;
+            EXPECT_TRUE(plan_flip23(d, t, f, bounded, nullptr, -1.0, gain - 1e-9));
+            EXPECT_FALSE(plan_flip23(d, t, f, bounded, nullptr, -1.0, gain + 1e-9));
+            ++compared;
+        }
+    EXPECT_GT(compared, 50);
+}
+
+// The optimisation keeps every tet's collapse in an array through flips and moves instead of
+// measuring again; its closing figures must be the mesh's own, bit for bit.
+TEST(test_tets_optimise, ReportedQualityIsTheMeshs) {
+    TetDomain d = sphere_domain(300, 1500, 9);
+    const OptimiseStats s = optimise(d);
+    const std::vector<double> q = slot_collapses(d);
+    double sum = 0;
+    for (double x : q) sum += x;
+    EXPECT_EQ(s.min_collapse_after, *std::min_element(q.begin(), q.end()));
+    EXPECT_EQ(s.mean_collapse_after, sum / static_cast<double>(q.size()));
+    EXPECT_GT(s.moves, 0u);
+    EXPECT_GT(s.flips23 + s.flips32 + s.flips44 + s.edge_removals, 0u);
+}
+
 }  // namespace

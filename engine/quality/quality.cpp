@@ -25,13 +25,6 @@ double det3(const Vec3& e1, const Vec3& e2, const Vec3& e3) { return dot(e1, cro
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // ---------------------------------------------------------------------------------------
-// Tetrahedron collapse.
-
-// The collapse value of the regular tet, edge a: height a·sqrt(2/3) over sqrt(sqrt(3)/4·a²).
-// a cancels, so this is exact and not the rounded 1.2408 of the paper.
-double regular_tet_collapse() { return std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0); }
-
-// ---------------------------------------------------------------------------------------
 // Scaled Jacobian at one corner, shared by the hex and the pyramid's tets.
 
 // det(e1, e2, e3) / (|e1||e2||e3|): the sine-like volume of the corner, in [-1, 1]. A
@@ -194,24 +187,6 @@ MeasureSummary summarize(const std::vector<double>& values, double lo, double hi
 
 // ---------------------------------------------------------------------------------------
 // Per element.
-
-// The signed distance from p_i to the plane of face i is 3V / A_i, so the value at vertex i
-// is 3V / A_i^(3/2), with 3V = det / 2 and det = 6V the signed orientation determinant. Its
-// minimum over the vertices is at the largest face when V > 0 and at the smallest one when
-// V < 0 (the most negative value), so only one face area is needed.
-double tet_collapse(const std::array<Vec3, 4>& p) {
-    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
-    const double three_volume = 0.5 * det3(e1, e2, e3);
-    // Four times the squared face areas, face i opposite vertex i.
-    const std::array<double, 4> area4{norm2(cross(p[2] - p[1], p[3] - p[1])), norm2(cross(e2, e3)),
-                                      norm2(cross(e1, e3)), norm2(cross(e1, e2))};
-    const auto [smallest, largest] = std::minmax_element(area4.begin(), area4.end());
-    const double area = 0.5 * std::sqrt(three_volume < 0 ? *smallest : *largest);
-    // V < 0 implies every face has an area; a zero area here means V = 0 and the four
-    // points collinear or coincident: a flat tet.
-    if (!(area > 0)) return 0.0;
-    return three_volume / (area * std::sqrt(area)) / regular_tet_collapse();
-}
 
 HexQuality hex_quality(const std::array<Vec3, 8>& p) {
     HexQuality q{kInfinity, 0.0};

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -28,7 +29,33 @@ struct Candidate {
     std::vector<index_t> claims;  // reads + the tets the plan writes (its old tets' neighbours)
 };
 
+// Runs f(0) .. f(n - 1), in parallel unless n is small: late rounds and focused passes have a
+// handful of items, and a parallel job for them costs more than it saves (much more when the
+// machine is oversubscribed and a worker holding a piece of it is descheduled).
+template <class F>
+void for_each_index(std::size_t n, F&& f) {
+    constexpr std::size_t kSerialBelow = 32;
+    if (n < kSerialBelow) {
+        for (std::size_t i = 0; i < n; ++i) f(i);
+        return;
+    }
+    tbb::parallel_for(std::size_t{0}, n, f);
+}
+
 constexpr std::array<std::array<int, 2>, 6> kTetEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
+// The shells of a tet's six edges (kTetEdges order), walked once per planning: the edge
+// removals and the planning's reads both need them, and the walks are random memory reads.
+struct TetShells {
+    std::array<EdgeShell, 6> shell;
+    std::array<bool, 6> closed{};
+};
+
+void walk_shells(const TetDomain& dom, index_t t, int max_ring, TetShells& s) {
+    for (std::size_t i = 0; i < kTetEdges.size(); ++i)
+        s.closed[i] =
+            edge_shell(dom, t, kTetEdges[i][0], kTetEdges[i][1], std::min(max_ring, EdgeShell::kMaxSize), s.shell[i]);
+}
 
 // How much a flip raises the sum of the mesh's collapses beyond keeping its mean: a flip that
 // adds a tet must bring more than the mean with it (positive: the mean rises).
@@ -38,8 +65,8 @@ double mean_gain(const FlipPlan& p, double mean) {
 
 // A fair tet (collapse at or above the floor) gets the flip that most raises the mesh's mean
 // while every tet it makes stays at or above the floor.
-bool best_mean_flip(const TetDomain& dom, index_t t, double min_gain, int max_ring, double mean, double floor,
-                    FlipPlan& best) {
+bool best_mean_flip(const TetDomain& dom, index_t t, const TetShells& shells, double min_gain, double mean,
+                    double floor, const double* slot_collapse, FlipPlan& best) {
     FlipPlan plan;
     bool found = false;
     double best_gain = 0;
@@ -53,14 +80,18 @@ bool best_mean_flip(const TetDomain& dom, index_t t, double min_gain, int max_ri
         }
     };
     const double below_floor = std::nextafter(floor, -1.0);
-    for (const auto& e : kTetEdges) consider(plan_edge_removal(dom, t, e[0], e[1], max_ring, plan, below_floor));
-    for (int f = 0; f < 4; ++f) consider(plan_flip23(dom, t, f, plan));
+    const double no_gain = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < kTetEdges.size(); ++i)
+        if (shells.closed[i])
+            consider(plan_shell_removal(dom, shells.shell[i], plan, below_floor, no_gain, slot_collapse));
+    for (int f = 0; f < 4; ++f) consider(plan_flip23(dom, t, f, plan, slot_collapse, below_floor));
     return found;
 }
 
 // The move that leaves the best smallest collapse among those that beat their own old tets
 // by min_gain; false when there is none.
-bool best_flip(const TetDomain& dom, index_t t, double min_gain, int max_ring, FlipPlan& best) {
+bool best_flip(const TetDomain& dom, index_t t, const TetShells& shells, double min_gain,
+               const double* slot_collapse, FlipPlan& best) {
     FlipPlan plan;
     bool found = false;
     const auto consider = [&](bool planned) {
@@ -69,11 +100,12 @@ bool best_flip(const TetDomain& dom, index_t t, double min_gain, int max_ring, F
             found = true;
         }
     };
-    for (const auto& e : kTetEdges) {
-        const double beat = found ? best.new_min : -std::numeric_limits<double>::infinity();
-        consider(plan_edge_removal(dom, t, e[0], e[1], max_ring, plan, beat, min_gain));
-    }
-    for (int f = 0; f < 4; ++f) consider(plan_flip23(dom, t, f, plan));
+    // A plan that cannot win is given up as soon as the bound shows it.
+    const auto beat = [&] { return found ? best.new_min : -std::numeric_limits<double>::infinity(); };
+    for (std::size_t i = 0; i < kTetEdges.size(); ++i)
+        if (shells.closed[i])
+            consider(plan_shell_removal(dom, shells.shell[i], plan, beat(), min_gain, slot_collapse));
+    for (int f = 0; f < 4; ++f) consider(plan_flip23(dom, t, f, plan, slot_collapse, beat(), min_gain));
     return found;
 }
 
@@ -86,18 +118,15 @@ bool still_there(const TetDomain& dom, const Candidate& c) {
 // The tets planning reads: t, its face neighbours, and the tets each edge-shell walk visits
 // (edge_shell stops at the same tet for the same mesh, so a walk that is cut short by the
 // front or by max_ring reads only the tets it stored).
-void planning_reads(const TetDomain& dom, index_t t, int max_ring, std::vector<index_t>& reads) {
+void planning_reads(const TetDomain& dom, index_t t, const TetShells& shells, std::vector<index_t>& reads) {
     reads.clear();
     reads.push_back(t);
     for (index_t f = 0; f < 4; ++f) {
         const index_t n = dom.tets.neighbour(4 * t + f);
         if (n != delaunay::kNoAdjacent) reads.push_back(n >> 2);
     }
-    EdgeShell shell;
-    for (const auto& e : kTetEdges) {
-        edge_shell(dom, t, e[0], e[1], std::min(max_ring, EdgeShell::kMaxSize), shell);
+    for (const EdgeShell& shell : shells.shell)
         for (int i = 1; i < shell.size; ++i) reads.push_back(shell.tets[i]);
-    }
 }
 
 // reads + the tets whose neighbour codes applying the plan rewrites.
@@ -114,30 +143,29 @@ void plan_claims(const TetDomain& dom, const FlipPlan& plan, const std::vector<i
     }
 }
 
-std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const std::vector<std::uint8_t>* active) {
+// `q`: the collapse of every slot (live ones).
+std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const std::vector<std::uint8_t>* active,
+                                const std::vector<double>& q) {
     const index_t n = dom.tets.size();
-    std::vector<double> q(n);
-    tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
-        for (index_t t = r.begin(); t != r.end(); ++t) {
-            const index_t* v = dom.tets.vertex(t);
-            const bool wanted = v[0] != kFreeSlot &&
-                                (!active || (*active)[v[0]] || (*active)[v[1]] || (*active)[v[2]] || (*active)[v[3]]);
-            q[t] = wanted ? collapse_of(dom, v[0], v[1], v[2], v[3]) : std::numeric_limits<double>::infinity();
-        }
-    });
-    std::vector<Candidate> out;
+    // Sorted as (collapse, tet) pairs: a Candidate holds a whole plan, too big to shuffle.
+    std::vector<std::pair<double, index_t>> order;
     for (index_t t = 0; t < n; ++t) {
         if (!(q[t] < threshold)) continue;
         const index_t* v = dom.tets.vertex(t);
-        Candidate c;
-        c.tet = t;
-        c.vertices = {v[0], v[1], v[2], v[3]};
-        c.collapse = q[t];
-        out.push_back(std::move(c));
+        if (v[0] == kFreeSlot ||
+            (active && !(*active)[v[0]] && !(*active)[v[1]] && !(*active)[v[2]] && !(*active)[v[3]]))
+            continue;
+        order.emplace_back(q[t], t);
     }
-    std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
-        return a.collapse != b.collapse ? a.collapse < b.collapse : a.tet < b.tet;
-    });
+    std::sort(order.begin(), order.end());
+    std::vector<Candidate> out(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        Candidate& c = out[i];
+        const index_t* v = dom.tets.vertex(order[i].second);
+        c.tet = order[i].second;
+        c.vertices = {v[0], v[1], v[2], v[3]};
+        c.collapse = order[i].first;
+    }
     return out;
 }
 
@@ -145,9 +173,25 @@ std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const st
 
 FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
                            double mean_floor, const std::vector<std::uint8_t>* active,
-                           std::vector<std::uint8_t>& changed) {
+                           std::vector<std::uint8_t>& changed, std::vector<double>* collapses) {
     FlipSweepCounts counts;
-    std::vector<Candidate> cands = bad_tets(dom, threshold, active);
+    // The collapse of every slot, kept up to date as flips write slots: planning reads the old
+    // tets' collapses from it (points do not move during the sweep).
+    std::vector<double> q;
+    if (collapses && collapses->size() == dom.tets.size()) {
+        q = *collapses;
+    } else {
+        q.resize(dom.tets.size());
+        tbb::parallel_for(tbb::blocked_range<index_t>(0, dom.tets.size(), 1024),
+                          [&](const tbb::blocked_range<index_t>& r) {
+                              for (index_t t = r.begin(); t != r.end(); ++t) {
+                                  const index_t* v = dom.tets.vertex(t);
+                                  q[t] = v[0] == kFreeSlot ? std::numeric_limits<double>::infinity()
+                                                           : collapse_of(dom, v[0], v[1], v[2], v[3]);
+                              }
+                          });
+    }
+    std::vector<Candidate> cands = bad_tets(dom, threshold, active, q);
     std::vector<std::size_t> pending(cands.size());
     for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = i;
     std::vector<std::uint8_t> alive;
@@ -163,18 +207,25 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         written.resize(dom.tets.size(), 0);
         alive.assign(pending.size(), 0);
         // A plan stays valid, and the best one, while no flip rewrote a tet it read.
-        tbb::parallel_for(std::size_t{0}, pending.size(), [&](std::size_t i) {
+        const double* slot_collapse = q.data();
+        for_each_index(pending.size(), [&](std::size_t i) {
             Candidate& c = cands[pending[i]];
             const bool valid = c.planned != 0 && std::none_of(c.reads.begin(), c.reads.end(),
                                                               [&](index_t t) { return written[t] >= c.planned; });
             if (!valid) {
                 if (!still_there(dom, c)) return;
-                planning_reads(dom, c.tet, max_edge_ring, c.reads);
                 c.planned = stamp;
+                TetShells shells;
+                walk_shells(dom, c.tet, max_edge_ring, shells);
                 c.has_plan = c.collapse < mean_floor || mean <= 0
-                                  ? best_flip(dom, c.tet, min_gain, max_edge_ring, c.plan)
-                                  : best_mean_flip(dom, c.tet, min_gain, max_edge_ring, mean, mean_floor, c.plan);
-                if (c.has_plan) plan_claims(dom, c.plan, c.reads, c.claims);
+                                  ? best_flip(dom, c.tet, shells, min_gain, slot_collapse, c.plan)
+                                  : best_mean_flip(dom, c.tet, shells, min_gain, mean, mean_floor, slot_collapse,
+                                                   c.plan);
+                // Only a candidate with a plan stays pending, so only its reads are asked again.
+                if (c.has_plan) {
+                    planning_reads(dom, c.tet, shells, c.reads);
+                    plan_claims(dom, c.plan, c.reads, c.claims);
+                }
             }
             alive[i] = c.has_plan;
         });
@@ -199,11 +250,18 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         dom.tets.reserve(base + spare_total);
         dom.tets.set_size(base + static_cast<index_t>(spare_total));
         for (index_t s = base; s < dom.tets.size(); ++s) std::fill_n(dom.tets.vertex(s), 4, kFreeSlot);
+        q.resize(dom.tets.size(), std::numeric_limits<double>::infinity());
 
-        tbb::parallel_for(std::size_t{0}, taken.size(), [&](std::size_t k) {
+        for_each_index(taken.size(), [&](std::size_t k) {
             std::array<index_t, FlipPlan::kMaxNew> spare{};
             for (index_t s = 0; s < spare_per_move; ++s) spare[s] = base + static_cast<index_t>(k) * spare_per_move + s;
-            apply_flip(dom, cands[taken[k]].plan, {spare.data(), spare_per_move});
+            const FlipPlan& plan = cands[taken[k]].plan;
+            apply_flip(dom, plan, {spare.data(), spare_per_move});
+            // The slots apply_flip wrote: the old ones first, then the spare ones in order.
+            for (int j = 0; j < plan.new_count; ++j) {
+                const index_t slot = j < plan.old_count ? plan.old_tets[j] : spare[j - plan.old_count];
+                q[slot] = collapse_of(dom, plan.new_tets[j]);
+            }
         });
         for (std::size_t k : taken) {
             const FlipPlan& plan = cands[k].plan;
@@ -219,6 +277,12 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
             }
         }
         pending.swap(waiting);
+    }
+    if (collapses) {
+        // compact_tets keeps the live tets' order.
+        collapses->clear();
+        for (index_t t = 0; t < dom.tets.size(); ++t)
+            if (dom.tets.vertex(t)[0] != kFreeSlot) collapses->push_back(q[t]);
     }
     compact_tets(dom);
     return counts;

@@ -29,9 +29,11 @@ struct FlipSweepCounts {
 // `mean`: the mesh's mean collapse now (0: no mean-raising flips). `active` (one flag per point,
 // or nullptr for all points): only tets with an active vertex are attacked; later passes use it
 // to revisit only what changed. Every vertex of a tet a
-// flip creates gets changed[p] = 1 (changed has one flag per point). Leaves no free slots.
+// flip creates gets changed[p] = 1 (changed has one flag per point). `collapses` (optional):
+// on entry the collapse of every tet of dom when the caller has them (another size: computed
+// here), on return the collapse of every tet of the result. Leaves no free slots.
 FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
                            double mean_floor, const std::vector<std::uint8_t>* active,
-                           std::vector<std::uint8_t>& changed);
+                           std::vector<std::uint8_t>& changed, std::vector<double>* collapses = nullptr);
 
 }  // namespace tubemesh::tets

@@ -23,18 +23,24 @@ struct Measure {
     index_t below = 0;
 };
 
-// Collapses in parallel, summed serially in tet order: the mean does not depend on threads.
-// With `poor`, also flags the points of the tets below poor_below.
-Measure measure(const TetDomain& dom, double threshold, std::vector<std::uint8_t>* poor = nullptr,
-                double poor_below = 0) {
+// Every tet's collapse, in parallel. The flips and the smoothing keep this array up to date,
+// so it is computed once per optimisation.
+void compute_collapses(const TetDomain& dom, std::vector<double>& q) {
     const index_t n = dom.tets.size();
-    std::vector<double> q(n);
+    q.resize(n);
     tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
         for (index_t t = r.begin(); t != r.end(); ++t) {
             const index_t* v = dom.tets.vertex(t);
             q[t] = collapse_of(dom, v[0], v[1], v[2], v[3]);
         }
     });
+}
+
+// The tets' collapses q summed serially in tet order: the mean does not depend on threads.
+// With `poor`, also flags the points of the tets below poor_below.
+Measure measure(const TetDomain& dom, double threshold, const std::vector<double>& q,
+                std::vector<std::uint8_t>* poor = nullptr, double poor_below = 0) {
+    const index_t n = dom.tets.size();
     Measure m;
     if (n == 0) return m;
     m.min = std::numeric_limits<double>::infinity();
@@ -89,7 +95,9 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
     const auto start = Clock::now();
     OptimiseStats s;
     compact_tets(dom);
-    const Measure before = measure(dom, o.flip_threshold);
+    std::vector<double> collapses;
+    compute_collapses(dom, collapses);
+    const Measure before = measure(dom, o.flip_threshold, collapses);
     s.tets_before = dom.tets.size();
     s.min_collapse_before = before.min;
     s.mean_collapse_before = before.mean;
@@ -115,7 +123,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         std::fill(changed.begin(), changed.end(), 0);
         const FlipSweepCounts f =
             flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, last_mean, o.mean_floor,
-                       pass > 0 ? &near : nullptr, changed);
+                       pass > 0 ? &near : nullptr, changed, &collapses);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_flips += since(t0);
@@ -131,7 +139,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         }
         std::fill(changed.begin(), changed.end(), 0);
         const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain,
-                                                o.mean_floor, pass > 0 ? &near : nullptr, changed);
+                                                o.mean_floor, pass > 0 ? &near : nullptr, changed, collapses);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_smoothing += since(t0);
@@ -141,13 +149,13 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         // Late passes keep nudging points for ever smaller gains of the mean: when one gains
         // less than min_mean_gain of it, the next ones only work near the poor tets, until one
         // changes nothing or the passes run out (sums are serial, so this is deterministic).
-        const Measure now = measure(dom, o.flip_threshold, &poor, kFocusBelow);
+        const Measure now = measure(dom, o.flip_threshold, collapses, &poor, kFocusBelow);
         if (now.mean - last_mean < o.min_mean_gain * last_mean) focused = true;
         // The poor tets' points and their neighbours: moving a neighbour can free a poor tet.
         if (focused) points_near(dom, poor, poor_ring);
         last_mean = now.mean;
     }
-    const Measure after = measure(dom, o.flip_threshold);
+    const Measure after = measure(dom, o.flip_threshold, collapses);
     s.tets_after = dom.tets.size();
     s.min_collapse_after = after.min;
     s.mean_collapse_after = after.mean;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
@@ -64,23 +65,27 @@ std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Inci
     return classes;
 }
 
-// The smallest collapse and the sum of collapses of the tets around p with p placed at x
-// (nullptr: where it is).
+// The smallest collapse and the sum of collapses of the tets around p with p placed at x.
 struct StarQuality {
     double worst = std::numeric_limits<double>::infinity();
     double sum = 0;
 };
 
+// The corners of a star's tets in vertex-row order, gathered once per point: every target
+// and every trial position reads them again. `at`: where the moving point is among them.
+struct StarCorners {
+    std::vector<std::array<Vec3, 4>> corners;
+    std::vector<std::uint8_t> at;
+};
+
 // Stops (returning what it has) at the first tet at or below `give_up`: the caller rejects
 // such a position anyway, and most rejected trials fail on the star's old worst tet, which
 // try_move puts first.
-StarQuality star_quality(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3* x,
-                         double give_up = -std::numeric_limits<double>::infinity()) {
+StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up) {
     StarQuality s;
-    for (index_t t : star) {
-        const index_t* v = dom.tets.vertex(t);
-        std::array<Vec3, 4> c;
-        for (int i = 0; i < 4; ++i) c[i] = (x && v[i] == p) ? *x : point_vec(dom, v[i]);
+    for (std::size_t k = 0; k < star.corners.size(); ++k) {
+        std::array<Vec3, 4> c = star.corners[k];
+        c[star.at[k]] = x;
         const double q = tet_collapse(c);
         s.worst = std::min(s.worst, q);
         s.sum += q;
@@ -117,13 +122,12 @@ Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p) {
 
 // The volume-weighted mean of the star's circumcentres: the optimal-Delaunay (ODT) position of
 // p (Chen and Holst), which spreads points evenly where the centroid only averages them.
-Vec3 odt_target(const TetDomain& dom, std::span<const index_t> star, const Vec3& fallback) {
+Vec3 odt_target(const StarCorners& star, const Vec3& fallback) {
     Vec3 sum{0, 0, 0};
     double weight = 0;
-    for (index_t t : star) {
-        const index_t* v = dom.tets.vertex(t);
-        const Vec3 a = point_vec(dom, v[0]);
-        const Vec3 b = point_vec(dom, v[1]) - a, c = point_vec(dom, v[2]) - a, d = point_vec(dom, v[3]) - a;
+    for (const auto& corner : star.corners) {
+        const Vec3 a = corner[0];
+        const Vec3 b = corner[1] - a, c = corner[2] - a, d = corner[3] - a;
         const double det = dot(b, cross(c, d));
         if (!(det > 0)) continue;
         const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
@@ -136,14 +140,13 @@ Vec3 odt_target(const TetDomain& dom, std::span<const index_t> star, const Vec3&
 // The direction in which the sum of the star's collapses rises fastest when p moves (zero when
 // there is none). A tet's collapse is 3V / A^(3/2) over the regular tet's, A its largest face
 // area, so d ln q = d(3V) / 3V - 1.5 dA / A; only the faces through p have areas that move.
-Vec3 ascent_direction(const TetDomain& dom, index_t p, std::span<const index_t> star) {
+// `collapse[k]`: the collapse of star[k] as it is.
+Vec3 ascent_direction(const StarCorners& star, std::span<const double> collapse) {
     Vec3 g{0, 0, 0};
-    for (index_t t : star) {
-        const index_t* v = dom.tets.vertex(t);
-        const int lp = local_index(dom, t, p);
-        std::array<Vec3, 4> c;
-        for (int i = 0; i < 4; ++i) c[i] = point_vec(dom, v[i]);
-        const double q = tet_collapse(c);
+    for (std::size_t k_star = 0; k_star < star.corners.size(); ++k_star) {
+        const int lp = star.at[k_star];
+        const std::array<Vec3, 4>& c = star.corners[k_star];
+        const double q = collapse[k_star];
         if (!(q > 0)) continue;
         const auto& f = kTetFaceToward[lp];
         const Vec3 opposite = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);  // toward p
@@ -190,13 +193,25 @@ Vec3 ascent_direction(const TetDomain& dom, index_t p, std::span<const index_t> 
 // worst tets of the mesh decide its minimum, the bulk only the mean.
 constexpr double kPolishBelow = 0.35;
 
+// Per-thread scratch of try_move: the star (old worst tet first) and its tets' collapses.
+struct StarScratch {
+    std::vector<index_t> star;
+    std::vector<double> collapse;
+    StarCorners corners;
+};
+
+// `tet_collapse_now`: the collapse of every tet, updated for p's star when p moves.
 bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, double threshold, double min_gain,
-              double floor, std::vector<index_t>& star, double& worst_before, bool polish) {
+              double floor, StarScratch& scratch, double& worst_before, bool polish,
+              std::vector<double>& tet_collapse_now) {
     StarQuality now;
     std::size_t worst_at = 0;
+    auto& star = scratch.star;
+    auto& collapse = scratch.collapse;
+    collapse.resize(incident.size());
     for (std::size_t k = 0; k < incident.size(); ++k) {
-        const index_t* v = dom.tets.vertex(incident[k]);
-        const double q = collapse_of(dom, v[0], v[1], v[2], v[3]);
+        const double q = tet_collapse_now[incident[k]];
+        collapse[k] = q;
         now.sum += q;
         if (q < now.worst) {
             now.worst = q;
@@ -209,32 +224,38 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     // order of summation changes (a sum never decides more than min_gain apart).
     star.assign(incident.begin(), incident.end());
     std::swap(star[0], star[worst_at]);
+    std::swap(collapse[0], collapse[worst_at]);
     const index_t worst_tet = star[0];
+    StarCorners& corners = scratch.corners;
+    corners.corners.resize(star.size());
+    corners.at.resize(star.size());
+    for (std::size_t k = 0; k < star.size(); ++k) {
+        const index_t* v = dom.tets.vertex(star[k]);
+        for (int i = 0; i < 4; ++i) {
+            corners.corners[k][i] = point_vec(dom, v[i]);
+            if (v[i] == p) corners.at[k] = static_cast<std::uint8_t>(i);
+        }
+    }
 
     const Vec3 here = point_vec(dom, p);
     Vec3 centroid{0, 0, 0};
-    for (index_t t : star)
-        for (int i = 0; i < 4; ++i) {
-            const index_t q = dom.tets.vertex(t)[i];
-            if (q != p) centroid = centroid + point_vec(dom, q);
-        }
+    for (std::size_t k = 0; k < star.size(); ++k)
+        for (int i = 0; i < 4; ++i)
+            if (i != corners.at[k]) centroid = centroid + corners.corners[k][i];
     centroid = (1.0 / (3.0 * static_cast<double>(star.size()))) * centroid;
     double reach = 0;
-    for (index_t t : star)
-        for (int i = 0; i < 4; ++i) {
-            const index_t q = dom.tets.vertex(t)[i];
-            if (q != p) reach += norm(point_vec(dom, q) - here);
-        }
+    for (std::size_t k = 0; k < star.size(); ++k)
+        for (int i = 0; i < 4; ++i)
+            if (i != corners.at[k]) reach += norm(corners.corners[k][i] - here);
     reach /= 3.0 * static_cast<double>(star.size());
-    const Vec3 odt = odt_target(dom, star, centroid);
+    const Vec3 odt = odt_target(corners, centroid);
     // In a polish sweep a poor star also aims at the regular apices of its other poor tets (up
     // to 4): the worst one's apex alone often only trades it for the next.
     std::array<Vec3, 7> target_store{centroid, odt, regular_apex(dom, worst_tet, p)};
     std::size_t target_count = 3;
     if (polish && now.worst < kPolishBelow)
         for (std::size_t k = 1; k < star.size() && target_count < target_store.size(); ++k) {
-            const index_t* v = dom.tets.vertex(star[k]);
-            if (collapse_of(dom, v[0], v[1], v[2], v[3]) < kPolishBelow)
+            if (collapse[k] < kPolishBelow)
                 target_store[target_count++] = regular_apex(dom, star[k], p);
         }
     const std::span<const Vec3> targets(target_store.data(), target_count);
@@ -250,7 +271,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
         for (const Vec3& target : targets)
             for (double step : kSteps) {
                 const Vec3 x = here + step * (target - here);
-                const double q = star_quality(dom, p, star, &x, best).worst;
+                const double q = star_quality(corners, x, best).worst;
                 if (q > best) {
                     best = q;
                     best_x = x;
@@ -260,20 +281,21 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     if (!improved) {
         double best_sum = now.sum + min_gain * static_cast<double>(star.size());
         const double keep_above = std::min(now.worst, floor);
+        const double give_up = std::nextafter(keep_above, -1.0);
         // Mean-raising moves of a fair star: the two longer steps (the short one seldom wins).
         const std::span<const double> sum_steps = now.worst < kPolishBelow ? kSteps : kSteps.first(2);
         // Along the ascent of the sum: 0.4 of the star's mean edge from p, then halving. On the
         // paper's examples this target raised the mean by 0.002-0.006; four steps from 0.4 did
         // 0.001-0.003 better than two from 0.2 (2026-12-02).
         constexpr double kUphillSteps[] = {1.0, 0.5, 0.25, 0.125};
-        const Vec3 g = ascent_direction(dom, p, star);
+        const Vec3 g = ascent_direction(corners, collapse);
         const double glen = norm(g);
         const Vec3 uphill = glen > 0 ? here + (0.4 * reach / glen) * g : here;
         for (int k = 0; k < 3; ++k) {
             const Vec3 target = k == 0 ? uphill : k == 1 ? odt : centroid;
             for (double step : k == 0 ? std::span<const double>(kUphillSteps) : sum_steps) {
                 const Vec3 x = here + step * (target - here);
-                const StarQuality q = star_quality(dom, p, star, &x, std::nextafter(keep_above, -1.0));
+                const StarQuality q = star_quality(corners, x, give_up);
                 if (q.worst >= keep_above && q.sum > best_sum) {
                     best_sum = q.sum;
                     best_x = x;
@@ -287,13 +309,19 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     c[0] = best_x.x;
     c[1] = best_x.y;
     c[2] = best_x.z;
+    // No other point of p's colour has a vertex in p's star: these slots are p's alone.
+    for (index_t t : incident) {
+        const index_t* v = dom.tets.vertex(t);
+        tet_collapse_now[t] = collapse_of(dom, v[0], v[1], v[2], v[3]);
+    }
     return true;
 }
 
 }  // namespace
 
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
-                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed) {
+                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
+                              std::vector<double>& collapses) {
     SmoothingCounts counts;
     const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
@@ -304,7 +332,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     std::vector<std::uint8_t> moved, again(points, 0);
     std::vector<index_t> moved_points;
     std::vector<double> worst;
-    tbb::enumerable_thread_specific<std::vector<index_t>> star_scratch;
+    tbb::enumerable_thread_specific<StarScratch> star_scratch;
     // `sweeps` sweeps, then up to kPolishSweeps over the points near a moved poor star.
     constexpr int kPolishSweeps = 3;
     const int total_sweeps = sweeps > 0 ? sweeps + kPolishSweeps : 0;
@@ -317,13 +345,21 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
         for (const auto& pts : classes) {
             moved.assign(pts.size(), 0);
             worst.assign(pts.size(), 0.0);
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 16),
-                              [&](const tbb::blocked_range<std::size_t>& r) {
-                                  auto& star = star_scratch.local();
-                                  for (std::size_t i = r.begin(); i != r.end(); ++i)
-                                      moved[i] = try_move(dom, pts[i], inc.of(pts[i]), below, min_gain, floor, star,
-                                                          worst[i], polish);
-                              });
+            const auto move_range = [&](const tbb::blocked_range<std::size_t>& r) {
+                auto& scratch = star_scratch.local();
+                for (std::size_t i = r.begin(); i != r.end(); ++i)
+                    moved[i] = try_move(dom, pts[i], inc.of(pts[i]), below, min_gain, floor, scratch, worst[i], polish,
+                                        collapses);
+            };
+            // A small colour (most of the polish sweeps' and focused passes') runs on this
+            // thread: a parallel job for a few points costs more than it saves, much more on
+            // an oversubscribed machine, where every job waits for its slowest worker.
+            constexpr std::size_t kGrain = 16;
+            const tbb::blocked_range<std::size_t> all(0, pts.size(), kGrain);
+            if (pts.size() < 2 * kGrain)
+                move_range(all);
+            else
+                tbb::parallel_for(all, move_range);
             for (std::size_t i = 0; i < pts.size(); ++i) {
                 if (!moved[i]) continue;
                 moved_points.push_back(pts[i]);

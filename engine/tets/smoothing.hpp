@@ -30,8 +30,10 @@ struct SmoothingCounts {
 // (the others would meet the same star again). After them (when sweeps > 0) come up to three
 // polish sweeps over the points near a moved point whose worst tet was below 0.35, with finer
 // steps and more targets: those few stars decide the minimum. A moved point gets
-// changed[p] = 1 (one flag per point). The domain has no free slots.
+// changed[p] = 1 (one flag per point). The domain has no free slots. `collapses`: the collapse
+// of every tet (collapse_of over its vertex row), read instead of computed and kept up to date.
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
-                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed);
+                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
+                              std::vector<double>& collapses);
 
 }  // namespace tubemesh::tets

@@ -17,11 +17,12 @@ bool all_positive(const TetDomain& dom, const FlipPlan& plan) {
     return true;
 }
 
-double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count, double* sum = nullptr) {
+double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count, double* sum,
+                            const double* slot_collapse) {
     double q = std::numeric_limits<double>::infinity(), total = 0;
     for (int i = 0; i < count; ++i) {
         const index_t* v = dom.tets.vertex(tets[i]);
-        const double x = collapse_of(dom, v[0], v[1], v[2], v[3]);
+        const double x = slot_collapse ? slot_collapse[tets[i]] : collapse_of(dom, v[0], v[1], v[2], v[3]);
         q = std::min(q, x);
         total += x;
     }
@@ -44,7 +45,8 @@ FaceKey face_key(const index_t* v, int f) {
 
 }  // namespace
 
-bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan) {
+bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan, const double* slot_collapse,
+                 double must_exceed, double gain) {
     const index_t n = dom.tets.neighbour(4 * t + static_cast<index_t>(f));
     if (n == kNoAdjacent) return false;
     const index_t other = n >> 2;
@@ -62,11 +64,13 @@ bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan) {
     plan.new_tets[0] = {a, b, e, d};
     plan.new_tets[1] = {b, c, e, d};
     plan.new_tets[2] = {c, a, e, d};
-    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), 2, &plan.old_sum);
+    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), 2, &plan.old_sum, slot_collapse);
+    const double bound = std::max(must_exceed, plan.old_min + gain);
     plan.new_min = std::numeric_limits<double>::infinity();
     plan.new_sum = 0;
     for (int j = 0; j < 3; ++j) {
         const double q = collapse_of(dom, plan.new_tets[j]);
+        if (!(q > bound)) return false;
         plan.new_min = std::min(plan.new_min, q);
         plan.new_sum += q;
     }
@@ -74,13 +78,18 @@ bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan) {
 }
 
 bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan,
-                       double must_exceed, double gain) {
+                       double must_exceed, double gain, const double* slot_collapse) {
     EdgeShell shell;
     if (!edge_shell(dom, t, la, lb, std::min(max_ring, EdgeShell::kMaxSize), shell)) return false;
+    return plan_shell_removal(dom, shell, plan, must_exceed, gain, slot_collapse);
+}
+
+bool plan_shell_removal(const TetDomain& dom, const EdgeShell& shell, FlipPlan& plan, double must_exceed, double gain,
+                        const double* slot_collapse) {
     const int n = shell.size;
     if (n < 3) return false;
     double old_sum = 0;
-    const double old_min = min_collapse_of_tets(dom, shell.tets.data(), n, &old_sum);
+    const double old_min = min_collapse_of_tets(dom, shell.tets.data(), n, &old_sum, slot_collapse);
     // Triangulations at or below the bound are of no use to the caller: the search skips them
     // (a sub-polygon no better than the bound keeps the bound as its value, which then loses).
     const double bound = std::max(must_exceed, old_min + gain);
@@ -89,8 +98,13 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
     // best[i][j]: the largest smallest collapse over the triangulations of the sub-polygon
     // p_i .. p_j (closed by the chord p_i p_j), each triangle (p_i, p_k, p_j) making the tets
     // (p_i, p_k, p_j, b) and (p_k, p_i, p_j, a): the ring runs counter-clockwise seen from b.
-    std::array<std::array<double, N>, N> best{};
-    std::array<std::array<int, N>, N> split{};
+    // Left uninitialised (about 3 kB, and planning runs hundreds of thousands of times): the
+    // loops below write every entry before reading it.
+    std::array<std::array<double, N>, N> best;
+    std::array<std::array<int, N>, N> split;
+    // The collapses of the two tets of the chosen split (valid where best[i][j] beats the
+    // bound, the only case in which they are read): the plan's sum needs them again.
+    std::array<std::array<double, N>, N> split_b, split_a;
     for (int i = 0; i + 1 < n; ++i) best[i][i + 1] = std::numeric_limits<double>::infinity();
     for (int gap = 2; gap < n; ++gap) {
         for (int i = 0; i + gap < n; ++i) {
@@ -100,12 +114,16 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
             for (int k = i + 1; k < j; ++k) {
                 double q = std::min(best[i][k], best[k][j]);
                 if (q <= q_best) continue;
-                q = std::min(q, collapse_of(dom, p[i], p[k], p[j], shell.b));
+                const double qb = collapse_of(dom, p[i], p[k], p[j], shell.b);
+                q = std::min(q, qb);
                 if (q <= q_best) continue;
-                q = std::min(q, collapse_of(dom, p[k], p[i], p[j], shell.a));
+                const double qa = collapse_of(dom, p[k], p[i], p[j], shell.a);
+                q = std::min(q, qa);
                 if (q > q_best) {
                     q_best = q;
                     k_best = k;
+                    split_b[i][j] = qb;
+                    split_a[i][j] = qa;
                 }
             }
             best[i][j] = q_best;
@@ -120,6 +138,7 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
     plan.new_min = best[0][n - 1];
     if (!(plan.new_min > bound)) return false;
     plan.new_count = 0;
+    plan.new_sum = 0;
     std::array<std::array<int, 2>, N> stack{};
     int top = 0;
     stack[top++] = {0, n - 1};
@@ -129,11 +148,11 @@ bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_
         const int k = split[i][j];
         plan.new_tets[plan.new_count++] = {p[i], p[k], p[j], shell.b};
         plan.new_tets[plan.new_count++] = {p[k], p[i], p[j], shell.a};
+        plan.new_sum += split_b[i][j];
+        plan.new_sum += split_a[i][j];
         stack[top++] = {i, k};
         stack[top++] = {k, j};
     }
-    plan.new_sum = 0;
-    for (int j = 0; j < plan.new_count; ++j) plan.new_sum += collapse_of(dom, plan.new_tets[j]);
     return plan.new_min > 0 && all_positive(dom, plan);
 }
 

@@ -40,9 +40,17 @@ struct FlipPlan {
     int extra_slots() const { return new_count - old_count; }
 };
 
+// `slot_collapse` (optional, both planners): the collapse of the tet in every slot, as
+// collapse_of over the slot's vertex row gives it; the planners read the old tets' collapses
+// from it instead of computing them again (a sweep plans most tets many times over).
+
 // Plans the 2-3 flip of face f of tet t (the face opposite vertex f). False when the face is a
-// front face or the three new tets would not all be positively oriented (exact test).
-bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan);
+// front face or the three new tets would not all be positively oriented (exact test). Also
+// false when the new tets' smallest collapse is not above both must_exceed and the old tets'
+// smallest collapse + gain (defaults: no such bound); the bound stops at the first new tet.
+bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan, const double* slot_collapse = nullptr,
+                 double must_exceed = -std::numeric_limits<double>::infinity(),
+                 double gain = -std::numeric_limits<double>::infinity());
 
 // Plans the removal of the edge between local vertices la and lb of tet t, whose shell may
 // hold at most max_ring tets (3..EdgeShell::kMaxSize). False when the shell is open or too
@@ -51,7 +59,14 @@ bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan);
 // the old tets' smallest collapse + gain (defaults: no such bound); the bound prunes the search.
 bool plan_edge_removal(const TetDomain& dom, index_t t, int la, int lb, int max_ring, FlipPlan& plan,
                        double must_exceed = -std::numeric_limits<double>::infinity(),
-                       double gain = -std::numeric_limits<double>::infinity());
+                       double gain = -std::numeric_limits<double>::infinity(),
+                       const double* slot_collapse = nullptr);
+
+// The same for a closed shell edge_shell found (for callers that walk the shells themselves).
+bool plan_shell_removal(const TetDomain& dom, const EdgeShell& shell, FlipPlan& plan,
+                        double must_exceed = -std::numeric_limits<double>::infinity(),
+                        double gain = -std::numeric_limits<double>::infinity(),
+                        const double* slot_collapse = nullptr);
 
 // Largest number of spare slots a plan with rings up to max_ring tets can need.
 inline int max_extra_slots(int max_ring) { return max_ring - 4 > 1 ? max_ring - 4 : 1; }

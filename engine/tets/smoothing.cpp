@@ -94,32 +94,6 @@ StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up)
     return s;
 }
 
-bool none_inverted(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3& x) {
-    const double moved[3] = {x.x, x.y, x.z};
-    for (index_t t : star) {
-        const index_t* v = dom.tets.vertex(t);
-        std::array<const double*, 4> c;
-        for (int i = 0; i < 4; ++i) c[i] = v[i] == p ? moved : dom.point(v[i]);
-        if (predicates::orient3d_inline(c[0], c[1], c[2], c[3]) <= 0) return false;
-    }
-    return true;
-}
-
-// Where p would make tet t regular over its opposite face: above the face's centroid, at the
-// regular tet's height for the face's mean edge length, on p's side.
-Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p) {
-    const index_t* v = dom.tets.vertex(t);
-    const int lp = local_index(dom, t, p);
-    const auto& f = kTetFaceToward[lp];
-    const Vec3 a = point_vec(dom, v[f[0]]), b = point_vec(dom, v[f[1]]), c = point_vec(dom, v[f[2]]);
-    const Vec3 normal = cross(b - a, c - a);  // toward p: (a, b, c, p) is positive
-    const double len = norm(normal);
-    const Vec3 centroid = (1.0 / 3.0) * (a + b + c);
-    if (!(len > 0)) return centroid;
-    const double edge = (norm(b - a) + norm(c - b) + norm(a - c)) / 3.0;
-    return centroid + (std::sqrt(2.0 / 3.0) * edge / len) * normal;
-}
-
 // The volume-weighted mean of the star's circumcentres: the optimal-Delaunay (ODT) position of
 // p (Chen and Holst), which spreads points evenly where the centroid only averages them.
 Vec3 odt_target(const StarCorners& star, const Vec3& fallback) {
@@ -318,6 +292,32 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
 }
 
 }  // namespace
+
+bool none_inverted(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3& x) {
+    const double moved[3] = {x.x, x.y, x.z};
+    for (index_t t : star) {
+        const index_t* v = dom.tets.vertex(t);
+        std::array<const double*, 4> c;
+        for (int i = 0; i < 4; ++i) c[i] = v[i] == p ? moved : dom.point(v[i]);
+        if (predicates::orient3d_inline(c[0], c[1], c[2], c[3]) <= 0) return false;
+    }
+    return true;
+}
+
+// Where p would make tet t regular over its opposite face: above the face's centroid, at the
+// regular tet's height for the face's mean edge length, on p's side.
+Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p) {
+    const index_t* v = dom.tets.vertex(t);
+    const int lp = local_index(dom, t, p);
+    const auto& f = kTetFaceToward[lp];
+    const Vec3 a = point_vec(dom, v[f[0]]), b = point_vec(dom, v[f[1]]), c = point_vec(dom, v[f[2]]);
+    const Vec3 normal = cross(b - a, c - a);  // toward p: (a, b, c, p) is positive
+    const double len = norm(normal);
+    const Vec3 centroid = (1.0 / 3.0) * (a + b + c);
+    if (!(len > 0)) return centroid;
+    const double edge = (norm(b - a) + norm(c - b) + norm(a - c)) / 3.0;
+    return centroid + (std::sqrt(2.0 / 3.0) * edge / len) * normal;
+}
 
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,

@@ -12,8 +12,10 @@
 // points of a colour share a tet; the points of one colour move at once (tbb::parallel_for),
 // each reading only its own tets, whose other points do not move in that colour.
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/tets/tet_domain.hpp"
 
 namespace tubemesh::tets {
@@ -36,4 +38,10 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
                               std::vector<double>& collapses);
 
+// True when no tet of `star` (tets with point p as a vertex) inverts with p at x (exact orient3d).
+bool none_inverted(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3& x);
+
+// Where p would make tet t (p one of its vertices) regular over its opposite face: above the
+// face's centroid, at the regular tet's height for the face's mean edge length, on p's side.
+Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p);
 }  // namespace tubemesh::tets

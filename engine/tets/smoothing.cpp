@@ -65,35 +65,6 @@ std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Inci
     return classes;
 }
 
-// The smallest collapse and the sum of collapses of the tets around p with p placed at x.
-struct StarQuality {
-    double worst = std::numeric_limits<double>::infinity();
-    double sum = 0;
-};
-
-// The corners of a star's tets in vertex-row order, gathered once per point: every target
-// and every trial position reads them again. `at`: where the moving point is among them.
-struct StarCorners {
-    std::vector<std::array<Vec3, 4>> corners;
-    std::vector<std::uint8_t> at;
-};
-
-// Stops (returning what it has) at the first tet at or below `give_up`: the caller rejects
-// such a position anyway, and most rejected trials fail on the star's old worst tet, which
-// try_move puts first.
-StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up) {
-    StarQuality s;
-    for (std::size_t k = 0; k < star.corners.size(); ++k) {
-        std::array<Vec3, 4> c = star.corners[k];
-        c[star.at[k]] = x;
-        const double q = tet_collapse(c);
-        s.worst = std::min(s.worst, q);
-        s.sum += q;
-        if (q <= give_up) break;
-    }
-    return s;
-}
-
 // The volume-weighted mean of the star's circumcentres: the optimal-Delaunay (ODT) position of
 // p (Chen and Holst), which spreads points evenly where the centroid only averages them.
 Vec3 odt_target(const StarCorners& star, const Vec3& fallback) {
@@ -201,22 +172,10 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     std::swap(collapse[0], collapse[worst_at]);
     const index_t worst_tet = star[0];
     StarCorners& corners = scratch.corners;
-    corners.corners.resize(star.size());
-    corners.at.resize(star.size());
-    for (std::size_t k = 0; k < star.size(); ++k) {
-        const index_t* v = dom.tets.vertex(star[k]);
-        for (int i = 0; i < 4; ++i) {
-            corners.corners[k][i] = point_vec(dom, v[i]);
-            if (v[i] == p) corners.at[k] = static_cast<std::uint8_t>(i);
-        }
-    }
+    gather_star_corners(dom, p, star, corners);
 
     const Vec3 here = point_vec(dom, p);
-    Vec3 centroid{0, 0, 0};
-    for (std::size_t k = 0; k < star.size(); ++k)
-        for (int i = 0; i < 4; ++i)
-            if (i != corners.at[k]) centroid = centroid + corners.corners[k][i];
-    centroid = (1.0 / (3.0 * static_cast<double>(star.size()))) * centroid;
+    const Vec3 centroid = star_centroid(corners);
     double reach = 0;
     for (std::size_t k = 0; k < star.size(); ++k)
         for (int i = 0; i < 4; ++i)
@@ -380,6 +339,39 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
             }
     }
     return counts;
+}
+
+void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out) {
+    out.corners.resize(star.size());
+    out.at.resize(star.size());
+    for (std::size_t k = 0; k < star.size(); ++k) {
+        const index_t* v = dom.tets.vertex(star[k]);
+        for (int i = 0; i < 4; ++i) {
+            out.corners[k][i] = point_vec(dom, v[i]);
+            if (v[i] == p) out.at[k] = static_cast<std::uint8_t>(i);
+        }
+    }
+}
+
+Vec3 star_centroid(const StarCorners& star) {
+    Vec3 centroid{0, 0, 0};
+    for (std::size_t k = 0; k < star.corners.size(); ++k)
+        for (int i = 0; i < 4; ++i)
+            if (i != star.at[k]) centroid = centroid + star.corners[k][i];
+    return (1.0 / (3.0 * static_cast<double>(star.corners.size()))) * centroid;
+}
+
+StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up) {
+    StarQuality s;
+    for (std::size_t k = 0; k < star.corners.size(); ++k) {
+        std::array<Vec3, 4> c = star.corners[k];
+        c[star.at[k]] = x;
+        const double q = tet_collapse(c);
+        s.worst = std::min(s.worst, q);
+        s.sum += q;
+        if (q <= give_up) break;
+    }
+    return s;
 }
 
 }  // namespace tubemesh::tets

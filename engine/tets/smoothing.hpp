@@ -11,7 +11,9 @@
 // Parallel and deterministic: points are greedily coloured in index order so that no two
 // points of a colour share a tet; the points of one colour move at once (tbb::parallel_for),
 // each reading only its own tets, whose other points do not move in that colour.
+#include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -44,4 +46,25 @@ bool none_inverted(const TetDomain& dom, index_t p, std::span<const index_t> sta
 // Where p would make tet t (p one of its vertices) regular over its opposite face: above the
 // face's centroid, at the regular tet's height for the face's mean edge length, on p's side.
 Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p);
+
+// The corners of a star's tets (tets with point p as a vertex) in vertex-row order, gathered once
+// per point: every target and every trial position reads them again. `at`: where p is among them.
+struct StarCorners {
+    std::vector<std::array<Vec3, 4>> corners;
+    std::vector<std::uint8_t> at;
+};
+void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out);
+// The mean of the star's corners other than p (each counted once per tet it is in).
+Vec3 star_centroid(const StarCorners& star);
+
+// The smallest collapse and the sum of collapses of the star's tets with p placed at x.
+struct StarQuality {
+    double worst = std::numeric_limits<double>::infinity();
+    double sum = 0;
+};
+// Stops (returning what it has) at the first tet at or below `give_up`: a caller that rejects
+// such a position anyway saves the rest (-infinity: never stops).
+StarQuality star_quality(const StarCorners& star, const Vec3& x,
+                         double give_up = -std::numeric_limits<double>::infinity());
+
 }  // namespace tubemesh::tets

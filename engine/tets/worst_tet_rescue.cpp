@@ -67,49 +67,26 @@ void lift_point(TetDomain& dom, index_t seed, index_t p, double bound, Undo& u, 
                 std::vector<index_t>& touched) {
     vertex_star(dom, seed, p, star);
     touched.insert(touched.end(), star.begin(), star.end());
-    std::vector<std::array<Vec3, 4>> corners(star.size());
-    std::vector<int> at(star.size(), 0);
-    Vec3 centroid{0, 0, 0};
-    for (std::size_t k = 0; k < star.size(); ++k) {
-        const index_t* v = dom.tets.vertex(star[k]);
-        for (int i = 0; i < 4; ++i) {
-            corners[k][i] = point_vec(dom, v[i]);
-            if (v[i] == p) at[k] = i;
-            else centroid = centroid + corners[k][i];
-        }
-    }
-    centroid = (1.0 / (3.0 * static_cast<double>(star.size()))) * centroid;
+    StarCorners corners;
+    gather_star_corners(dom, p, star, corners);
+    const Vec3 centroid = star_centroid(corners);
     // Ranked by (min(worst tet, bound), sum of collapses): a star lifted past the bound
     // keeps as much of its sum as it can, which is what the mesh's mean is made of.
-    struct Score {
-        double worst, sum;
-    };
-    const auto better = [bound](const Score& x, const Score& y) {
+    const auto better = [bound](const StarQuality& x, const StarQuality& y) {
         const double a = std::min(x.worst, bound), b = std::min(y.worst, bound);
         return a != b ? a > b + 1e-9 : x.sum > y.sum + 1e-9;
     };
-    const auto score_at = [&](const Vec3& x) {
-        Score sc{std::numeric_limits<double>::infinity(), 0};
-        for (std::size_t k = 0; k < star.size(); ++k) {
-            std::array<Vec3, 4> c = corners[k];
-            c[at[k]] = x;
-            const double q = tet_collapse(c);
-            sc.worst = std::min(sc.worst, q);
-            sc.sum += q;
-        }
-        return sc;
-    };
     const Vec3 here = point_vec(dom, p);
-    Score best = score_at(here);
+    StarQuality best = star_quality(corners, here);
     std::vector<Vec3> targets{centroid};
     for (std::size_t k = 0; k < star.size(); ++k)
-        if (tet_collapse(corners[k]) < std::max(bound, best.worst + 0.05))
+        if (tet_collapse(corners.corners[k]) < std::max(bound, best.worst + 0.05))
             targets.push_back(regular_apex(dom, star[k], p));
     Vec3 best_x = here;
     for (const Vec3& target : targets)
         for (double step : {1.0, 0.5, 0.25, 0.125, 0.0625}) {
             const Vec3 x = here + step * (target - here);
-            const Score sc = score_at(x);
+            const StarQuality sc = star_quality(corners, x);
             if (better(sc, best)) {
                 best = sc;
                 best_x = x;
@@ -172,9 +149,7 @@ std::uint64_t rescue_worst_tets(TetDomain& dom, double bound, std::vector<double
         std::uint64_t lifted_now = 0;
         for (const index_t t : bad) {
             if (dom.tets.vertex(t)[0] == delaunay::kFreeSlot) continue;
-            const double q_t = collapse_of(dom, dom.tets.vertex(t)[0], dom.tets.vertex(t)[1], dom.tets.vertex(t)[2],
-                                           dom.tets.vertex(t)[3]);
-            if (!(q_t < bound)) continue;
+            if (!(q[t] < bound)) continue;  // lifted by an earlier rescue (q is kept current)
             // Candidates: faces 0..3 (2-3 flips), then the six edges.
             FlipPlan plan, best_plan;
             double best_gain = 1e-6;

@@ -179,7 +179,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
     // tets' collapses from it (points do not move during the sweep).
     std::vector<double> q;
     if (collapses && collapses->size() == dom.tets.size()) {
-        q = *collapses;
+        q = std::move(*collapses);  // rebuilt from q at the end
     } else {
         q.resize(dom.tets.size());
         tbb::parallel_for(tbb::blocked_range<index_t>(0, dom.tets.size(), 1024),

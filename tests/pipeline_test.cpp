@@ -114,20 +114,35 @@ TEST(Pipeline, SameMeshForOneAndTwoThreads) {
     EXPECT_EQ(a.tet_front, b.tet_front);
 }
 
-// The full mesh: the tet step splits its Delaunay passes by thread count unless asked for a
-// fixed split; either way a rerun with the same options gives the same mesh.
-TEST(Pipeline, FullMeshIsTheSameForAnyThreadCountWhenAsked) {
+// The full mesh: by default the tet step splits its Delaunay passes into a fixed number of
+// parts, so 1 and 2 threads give the same bytes; with one part per thread (partitions 0) the
+// split follows the thread count.
+TEST(Pipeline, FullMeshIsTheSameForAnyThreadCountByDefault) {
     const Prepared p = prepare("straight-pipe");
     MeshOptions one, two;
     one.threads = 1;
     two.threads = 2;
-    one.same_for_any_thread_count = two.same_for_any_thread_count = true;
     const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), one);
     const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), two);
     EXPECT_EQ(a.reached, Stage::Tets);
     EXPECT_GT(a.mesh.cell_count(CellKind::Tet), 0u);
     EXPECT_TRUE(a.mesh == b.mesh);
-    EXPECT_EQ(a.tet_stats.partitions, kFixedPartitions);
+    EXPECT_EQ(a.tet_stats.partitions, 2u);
+    EXPECT_EQ(b.tet_stats.partitions, 2u);
+}
+
+TEST(Pipeline, OnePartPerThreadWhenAsked) {
+    const Prepared p = prepare("straight-pipe");
+    MeshOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    one.tets.partitions = two.tets.partitions = 0;
+    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), one);
+    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), two);
+    EXPECT_EQ(a.tet_stats.partitions, 1u);
+    EXPECT_EQ(b.tet_stats.partitions, 2u);
+    EXPECT_TRUE(check_mesh(a.mesh).ok()) << describe(check_mesh(a.mesh));
+    EXPECT_TRUE(check_mesh(b.mesh).ok()) << describe(check_mesh(b.mesh));
 }
 
 TEST(Pipeline, FullMeshIsTheSameOnARerun) {

@@ -145,7 +145,6 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
     tets::TetStepOptions to = opt.tets;
     if (to.far_size <= 0) to.far_size = in.geometry.size;
     to.threads = opt.threads > 0 ? static_cast<unsigned>(opt.threads) : 0;
-    to.partitions = opt.same_for_any_thread_count ? kFixedPartitions : 0;
     to.part_done = [&progress] { progress.advance(); };
     out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), to);
     const tets::TetStepStats& s = out.tet_stats;

@@ -68,10 +68,6 @@ const char* stage_name(Stage s);  // "sweep", "surface", "pyramids", "tets"
 // The inverse of stage_name; nullopt for a name that is no stage.
 std::optional<Stage> stage_from_name(std::string_view name);
 
-// Delaunay parts of the tet step when MeshOptions::same_for_any_thread_count is set: two,
-// this machine's core count, so the fixed split costs nothing here.
-inline constexpr unsigned kFixedPartitions = 2;
-
 // Every knob of a run, each with its default. The first three are the user's sizes: geom
 // plans with them (geom/prepare.hpp, geom/mesh_file.hpp) and hands the planned S and St to the
 // engine in DiscreteGeometry; run_pipeline itself reads the fields from `sweep` on.
@@ -104,17 +100,16 @@ struct MeshOptions {
     // rounds, quality floor 0.45).
     PyramidOptions pyramids;
     // Tet step options (engine/tets/tet_step.hpp and the headers it names: gradation 1.6,
-    // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5). far_size = 0 (the
-    // default) takes S; threads and partitions come from the two fields below.
+    // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5, 2 Delaunay parts).
+    // far_size = 0 (the default) takes S; threads come from the field below.
     tets::TetStepOptions tets;
     // oneTBB worker threads for the whole run; 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
-    // Determinism. The same input, options and thread count always give the same mesh, byte
-    // for byte: there is no faster timing-dependent mode. The sweep, surface and pyramid
-    // phases also give the same mesh for every thread count. false (default): the tet step's
-    // Delaunay passes split their work into one part per thread; true: into a fixed
-    // kFixedPartitions parts, so the mesh is the same for any thread count and machine.
-    bool same_for_any_thread_count = false;
+    // Determinism: the same input and options always give the same mesh, byte for byte, for
+    // any thread count (the sweep, surface and pyramid phases by construction, the tet step
+    // because its Delaunay passes split into tets.partitions parts whatever the thread count;
+    // tets.partitions = 0 trades this for one part per thread). There is no faster
+    // timing-dependent mode.
     // Run the validity and conformity check (engine/pipeline/stage_check.hpp) on the result
     // before handing it out: geom::mesh_file / mesh_model throw when it fails. Default true.
     bool check = true;

@@ -1,5 +1,5 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
-// [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--same-for-any-threads]
+// [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
 // [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
 // (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
 // progress, print the phases and Table 1, and write the mesh to every OUT (format by
@@ -43,7 +43,7 @@ struct MeshArgs {
     double axial_aspect = defaults.sweep.axial_aspect;
     double pyramid_height = defaults.pyramids.height_factor;
     double gradation = defaults.tets.gradation;
-    bool same_for_any_threads = false;
+    unsigned tet_parts = defaults.tets.partitions;
     int threads = 0;
     int solid = 0;
     std::string report;
@@ -130,7 +130,7 @@ MeshOptions mesh_options(const MeshArgs& a, ProgressLine& progress) {
     o.sweep.axial_aspect = a.axial_aspect;
     o.pyramids.height_factor = a.pyramid_height;
     o.tets.gradation = a.gradation;
-    o.same_for_any_thread_count = a.same_for_any_threads;
+    o.tets.partitions = a.tet_parts;
     o.threads = a.threads;
     o.progress = progress.callback();
     return o;
@@ -170,9 +170,11 @@ Command add_mesh_command(CLI::App& app) {
                                 args->gradation))
         ->check(CLI::Range(1.0, 4.0));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
-    cmd->add_flag("--same-for-any-threads", args->same_for_any_threads,
-                  "Split the parallel tet step into a fixed number of parts, so the mesh is the same for any "
-                  "thread count (default: the same for the same thread count)");
+    cmd->add_option("--tet-parts", args->tet_parts,
+                    fmt::format("Spatial parts of the tet step's parallel Delaunay passes (default {}: the mesh is "
+                                "the same for any --threads; 0: one per thread, the mesh then depends on it)",
+                                args->tet_parts))
+        ->check(CLI::Range(0, 4096));
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
     cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
         ->check(CLI::Range(1, 1 << 30));

@@ -49,9 +49,17 @@ Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p);
 
 // The corners of a star's tets (tets with point p as a vertex) in vertex-row order, gathered once
 // per point: every target and every trial position reads them again. `at`: where p is among them.
+// `opposite`: each tet's face opposite p, (a, b, c) ordered so that (a, b, c, p) is positive, its
+// normal n = (b - a) x (c - a) and 4 area² = |n|²: a trial position x changes only the other
+// three faces and the volume (n · (x - a) / 2 = 3V), so star_quality computes those alone.
 struct StarCorners {
+    struct Opposite {
+        Vec3 a, b, c, n;
+        double area4;
+    };
     std::vector<std::array<Vec3, 4>> corners;
     std::vector<std::uint8_t> at;
+    std::vector<Opposite> opposite;
 };
 void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out);
 // The mean of the star's corners other than p (each counted once per tet it is in).

@@ -391,15 +391,19 @@ TEST(ControlSpace, SizeIsTheGradedMinimumOverTheNearestNodes) {
     }
 }
 
-// tet_too_big answers from the size-field bounds where it can: the same answers as asking h at
-// the centroid for every tet, on tolerances that make the bounds decide many of them.
-TEST(RefineSizeTest, BoundsGiveTheSameAnswers) {
+// point_sizes is the control space's h at each point, and tet_too_big compares a tet's mean
+// edge with tolerance times the mean of its four points' sizes: checked against both computed
+// here, on tolerances that make both answers common.
+TEST(RefineSizeTest, TooBigComparesTheMeanEdgeWithTheCornersSize) {
     const TetDomain d = l_domain();
     ControlSpaceOptions co;
     co.far_size = 0.3;
     const ControlSpace cs(d, co);
-    const MeshView view{d.tets, d.xyz};
-    int decided_big = 0, decided_small = 0;
+    const std::vector<double> h = point_sizes(d.xyz, cs);
+    ASSERT_EQ(h.size(), std::size_t{d.point_count()});
+    for (index_t i = 0; i < d.point_count(); ++i) EXPECT_EQ(h[i], cs.size(d.point(i))) << "point " << i;
+    const MeshView view{d.tets, d.xyz, h};
+    int big = 0, small = 0;
     for (double tolerance : {0.3, 0.8, 1.3, 3.0})
         for (index_t t = 0; t < d.tets.size(); ++t) {
             const index_t* v = d.tets.vertex(t);
@@ -407,15 +411,14 @@ TEST(RefineSizeTest, BoundsGiveTheSameAnswers) {
             for (int i = 0; i < 4; ++i) p[i] = {d.point(v[i])[0], d.point(v[i])[1], d.point(v[i])[2]};
             double sum = 0;
             for (int e = 0; e < 6; ++e) sum += norm(p[kTetTopology.edge[e].a] - p[kTetTopology.edge[e].b]);
-            const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-            const double q[3] = {c.x, c.y, c.z};
-            const bool want = sum / 6.0 > tolerance * cs.size(q);
-            EXPECT_EQ(tet_too_big(view, t, cs, tolerance), want) << "tet " << t << " tolerance " << tolerance;
-            decided_big += sum / 6.0 > tolerance * cs.far_size();
-            decided_small += !(sum / 6.0 > tolerance * cs.smallest_size());
+            const double corners = 0.25 * (cs.size(d.point(v[0])) + cs.size(d.point(v[1])) + cs.size(d.point(v[2])) +
+                                           cs.size(d.point(v[3])));
+            const bool want = sum / 6.0 > tolerance * corners;
+            EXPECT_EQ(tet_too_big(view, t, tolerance), want) << "tet " << t << " tolerance " << tolerance;
+            (want ? big : small) += 1;
         }
-    EXPECT_GT(decided_big, 0);
-    EXPECT_GT(decided_small, 0);
+    EXPECT_GT(big, 0);
+    EXPECT_GT(small, 0);
 }
 
 // Rounds of refinement by hand through the kernel: with the memos, each round's active faces
@@ -427,16 +430,17 @@ TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
     delaunay::Triangulation tri;
     tri.adopt(d.xyz, std::move(d.tets));
     std::vector<double> xyz = d.xyz;
+    std::vector<double> sizes = point_sizes(xyz, cs);
     TooBigMemo big;
     ProposalMemo proposals;
     std::uint64_t fewer_tests = 0;
     for (int round = 0; round < 4; ++round) {
-        const MeshView view{tri.store(), xyz};
+        const MeshView view{tri.store(), xyz, sizes};
         index_t live = 0;
         for (index_t t = 0; t < tri.store().size(); ++t) live += tri.store().vertex(t)[0] != delaunay::kFreeSlot;
         const std::uint64_t tests_before = big.tests;
-        const std::vector<index_t> faces = active_faces(view, cs, 1.3, big);
-        ASSERT_EQ(faces, active_faces(view, cs, 1.3)) << "round " << round;
+        const std::vector<index_t> faces = active_faces(view, 1.3, big);
+        ASSERT_EQ(faces, active_faces(view, 1.3)) << "round " << round;
         if (round > 0) fewer_tests += live - (big.tests - tests_before);
         if (faces.empty()) break;
         const std::vector<Candidate> got = propose_points(view, faces, cs, proposals);
@@ -455,6 +459,7 @@ TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
             const Candidate& c = got[keep[k]];
             ids.push_back(tri.point_count() + static_cast<index_t>(ids.size()));
             add.insert(add.end(), c.p, c.p + 3);
+            sizes.push_back(c.h);
         }
         if (ids.empty()) break;
         tri.add_points(add, ids);

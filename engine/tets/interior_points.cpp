@@ -58,27 +58,29 @@ index_t walk_to(const MeshView& m, index_t tet, const double* p, std::uint32_t s
 
 }  // namespace
 
-bool tet_too_big(const MeshView& m, index_t tet, const ControlSpace& space, double tolerance) {
+std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace& space) {
+    std::vector<double> h(xyz.size() / 3);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, h.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) h[i] = space.size(xyz.data() + 3 * i);
+    });
+    return h;
+}
+
+bool tet_too_big(const MeshView& m, index_t tet, double tolerance) {
     const index_t* v = m.tets.vertex(tet);
     const Vec3 p[4] = {at(m, v[0]), at(m, v[1]), at(m, v[2]), at(m, v[3])};
     double sum = 0;
     for (int e = 0; e < 6; ++e) sum += norm(p[kTetTopology.edge[e].a] - p[kTetTopology.edge[e].b]);
-    const double mean = sum / 6.0;
-    // h lies in [smallest_size, far_size] (as computed, not only in exact arithmetic): outside
-    // that band the answer needs no nearest-node query.
-    if (mean > tolerance * space.far_size()) return true;
-    if (!(mean > tolerance * space.smallest_size())) return false;
-    const Vec3 c = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-    const double q[3] = {c.x, c.y, c.z};
-    return mean > tolerance * space.size(q);
+    const double h = 0.25 * (m.h[v[0]] + m.h[v[1]] + m.h[v[2]] + m.h[v[3]]);
+    return sum / 6.0 > tolerance * h;
 }
 
-std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, double tolerance) {
+std::vector<index_t> active_faces(const MeshView& m, double tolerance) {
     TooBigMemo memo;
-    return active_faces(m, space, tolerance, memo);
+    return active_faces(m, tolerance, memo);
 }
 
-std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, double tolerance, TooBigMemo& memo) {
+std::vector<index_t> active_faces(const MeshView& m, double tolerance, TooBigMemo& memo) {
     const index_t n = m.tets.size();
     if (memo.ids.size() < n) {
         memo.ids.resize(n, {kFreeSlot, kFreeSlot, kFreeSlot, kFreeSlot});
@@ -94,7 +96,7 @@ std::vector<index_t> active_faces(const MeshView& m, const ControlSpace& space, 
                 known[0] = kFreeSlot;
                 memo.big[t] = 0;
             } else if (!std::equal(v, v + 4, known.begin())) {
-                memo.big[t] = tet_too_big(m, t, space, tolerance) ? 1 : 0;
+                memo.big[t] = tet_too_big(m, t, tolerance) ? 1 : 0;
                 std::copy_n(v, 4, known.begin());
                 ++made;
             }
@@ -146,7 +148,6 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 const Vec3 outward = cross(b - a, c - a);  // out of t
                 const double len = norm(outward);
                 if (!(len > 0)) continue;
-                const double gq[3] = {g.x, g.y, g.z};
                 const double rho2 = (distance2(g, a) + distance2(g, b) + distance2(g, c)) / 3.0;
                 // Apex at distance h from the face's vertices when the face allows it.
                 const auto apex = [&](double h) {
@@ -156,7 +157,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 // field the face's own size is too small for the tet it starts. On the paper's
                 // examples this raised the mean collapse by 0.001-0.007 and cut refinement rounds
                 // from 9-10 to 6 (2026-12-02).
-                const Vec3 first = apex(space.size(gq));
+                const Vec3 first = apex((m.h[v[node[0]]] + m.h[v[node[1]]] + m.h[v[node[2]]]) / 3.0);
                 const Vec3 mid = 0.5 * (g + first);
                 const double mq[3] = {mid.x, mid.y, mid.z};
                 const Vec3 p = apex(space.size(mq));

@@ -59,9 +59,12 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         std::vector<double> live(domain.xyz);
         TooBigMemo memo;
         ProposalMemo proposals;
+        // h at every point, by kernel id: the front's and Steiner points' now, each inserted
+        // point's from its candidate.
+        std::vector<double> sizes = point_sizes(domain.xyz, space);
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
-            const MeshView view{tri.store(), domain.xyz};
-            const std::vector<index_t> faces = active_faces(view, space, options.size_tolerance, memo);
+            const MeshView view{tri.store(), domain.xyz, sizes};
+            const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
             stats.too_big_left = static_cast<index_t>(faces.size());
             if (faces.empty()) break;
             std::vector<Candidate> cand = propose_points(view, faces, space, proposals);
@@ -82,6 +85,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             }
             tri.add_points(xyz, ids);
             domain.xyz.insert(domain.xyz.end(), xyz.begin(), xyz.end());
+            for (const Candidate& c : batch) sizes.push_back(c.h);
             for (std::size_t i = 0; i < batch.size(); ++i) tri.set_walk_start(ids[i], batch[i].tet);
             tri.reserve_tets(std::size_t{tri.store().size()} + 8 * batch.size() + 1024);
             const std::size_t blocked_before = tri.blocked().size(), dup_before = tri.duplicates().size();

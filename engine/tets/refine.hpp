@@ -15,7 +15,7 @@ namespace tubemesh::tets {
 class ControlSpace;
 
 struct RefineOptions {
-    // A tet is too big when its mean edge exceeds this times h at its centroid; 1.3.
+    // A tet is too big when its mean edge exceeds this times the mean h at its points; 1.3.
     double size_tolerance = 1.3;
     // A candidate closer than this times h to a point (or an accepted candidate) is dropped; 0.7.
     double reject_factor = 0.7;

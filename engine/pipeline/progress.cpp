@@ -24,6 +24,9 @@ void PhaseProgress::finish() {
     std::lock_guard lock(mutex_);
     if (finished_) return;
     finished_ = true;
+    // advance() may have reported the total already (the tet step's third part): a listener
+    // that prints a line per completed phase would print it twice.
+    if (total_ > 0 && reported_ == total_) return;
     reported_ = total_ > 0 ? total_ : done_.load(std::memory_order_relaxed);
     callback_(ProgressEvent{phase_, reported_, total_});
 }

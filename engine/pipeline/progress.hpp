@@ -36,8 +36,9 @@ public:
     // Thread-safe. Reports when the count crosses the next 1% step and no other thread is
     // reporting right now (a skipped report is covered by a later one or by finish()).
     void advance(std::uint64_t items = 1);
-    // Reports total of total (once; later calls do nothing). Not called on failure, so a
-    // listener never sees a phase that threw as complete.
+    // Reports total of total, unless advance() already did: a listener sees it once. Later
+    // calls do nothing. Not called on failure, so a listener never sees a phase that threw as
+    // complete.
     void finish();
 
 private:

@@ -37,11 +37,11 @@ struct TetStepOptions {
     unsigned threads = 0;
     // Spatial parts of the parallel Delaunay passes (recovery's kernel run and refinement).
     // The mesh depends on the input and this count only, so with a fixed count it is the same
-    // for any thread count. Default 2, this machine's core count: one part per core costs
-    // nothing at 2 threads and ~3 % at 1 (paper-ex1, 2026-12-02); and at 1 thread the quality
-    // bars were met by the 2-part mesh and missed by the 1-part one (paper-ex2: minimum 0.305
-    // and 0.280). 0 = one part per thread (more parallel work on machines with more cores; the
-    // mesh then depends on the thread count).
+    // for any thread count. Default 2, this machine's core count: it costs nothing at 2 threads
+    // and ~3 % at 1 (paper-ex1, 2026-12-02), and the quality bars checked at one thread count
+    // then hold at all: paper-ex2 at S 1.1 has minimum collapse 0.321 at 1, 2 and 3 threads,
+    // where one part per thread gives 0.289 at 1 and 3. 0 = one part per thread (more parallel
+    // work on machines with more cores; the mesh then depends on the thread count).
     unsigned partitions = 2;
     RecoveryOptions recovery;  // threads/partitions are overridden by the two fields above
     RefineOptions refine;      // likewise

@@ -11,7 +11,7 @@ namespace {
 constexpr ReferenceCase kCases[] = {
     {"paper-ex1", "paper-ex1", 0.6},       {"paper-ex2", "paper-ex2", 1.1},
     {"paper-ex3", "paper-ex3", 40},        {"serpentine-lift", "serpentine-lift", 0},
-    {kLargeLift, "serpentine-lift", 0.11},
+    {"dam-block", "paper-ex1", 0},         {kLargeLift, "serpentine-lift", 0.11},
 };
 }  // namespace
 

@@ -10,7 +10,6 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
@@ -42,8 +41,9 @@ Incidence build_incidence(const TetDomain& dom) {
 
 // Greedy colouring of `points` (increasing) in that order: a colour never holds two points of
 // one tet. `colour` has one entry per point, kNoIndex on entry and again on return.
-std::vector<std::vector<index_t>> colour_greedy(const TetDomain& dom, const Incidence& inc,
-                                                std::span<const index_t> points, std::vector<std::uint32_t>& colour) {
+std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Incidence& inc,
+                                                const std::vector<index_t>& points,
+                                                std::vector<std::uint32_t>& colour) {
     std::vector<index_t> seen;  // seen[c] == p: colour c is taken by a neighbour of p
     std::vector<std::vector<index_t>> classes;
     for (index_t p : points) {
@@ -63,28 +63,6 @@ std::vector<std::vector<index_t>> colour_greedy(const TetDomain& dom, const Inci
     }
     for (index_t p : points) colour[p] = kNoIndex;
     return classes;
-}
-
-// Below this many points one thread colours them all.
-constexpr std::size_t kSplitColouringFrom = 4096;
-
-// The classes of `points`: greedy colourings of its first and second halves, made side by side
-// (each half only sees its own points' colours, so the greedy pass is serial within a half
-// only), the first half's classes then the second's; no class mixes the halves. The split is
-// by position, not by thread count, so the classes are the same for any thread count. The
-// serial colouring was 0.2-0.3 s of the serpentine lift's 1.2 s smoothing on 2 threads.
-// `colour` and `colour_b` have one entry per point, kNoIndex on entry and again on return.
-std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Incidence& inc,
-                                                const std::vector<index_t>& points, std::vector<std::uint32_t>& colour,
-                                                std::vector<std::uint32_t>& colour_b) {
-    const std::span<const index_t> all(points);
-    if (points.size() < kSplitColouringFrom) return colour_greedy(dom, inc, all, colour);
-    const std::size_t half = points.size() / 2;
-    std::vector<std::vector<index_t>> first, second;
-    tbb::parallel_invoke([&] { first = colour_greedy(dom, inc, all.first(half), colour); },
-                         [&] { second = colour_greedy(dom, inc, all.subspan(half), colour_b); });
-    for (auto& c : second) first.push_back(std::move(c));
-    return first;
 }
 
 // The volume-weighted mean of the star's circumcentres: the optimal-Delaunay (ODT) position of
@@ -309,7 +287,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     std::vector<index_t> todo;
     for (index_t p = dom.front_points; p < points; ++p)
         if (!inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
-    std::vector<std::uint32_t> colour(points, kNoIndex), colour_b(points, kNoIndex);
+    std::vector<std::uint32_t> colour(points, kNoIndex);
     std::vector<std::uint8_t> moved, again(points, 0);
     std::vector<index_t> moved_points;
     std::vector<double> worst;
@@ -320,7 +298,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     for (int sweep = 0; sweep < total_sweeps && !todo.empty(); ++sweep) {
         const bool polish = sweep >= sweeps;
         const double below = polish ? std::min(threshold, kPolishBelow) : threshold;
-        const auto classes = colour_points(dom, inc, todo, colour, colour_b);
+        const auto classes = colour_points(dom, inc, todo, colour);
         counts.colours = std::max<std::uint64_t>(counts.colours, classes.size());
         moved_points.clear();
         for (const auto& pts : classes) {

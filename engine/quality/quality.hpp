@@ -19,21 +19,26 @@ namespace tubemesh {
 // is 3V / A_i^(3/2), with 3V = det / 2 and det = 6V the signed orientation determinant. Its
 // minimum over the vertices is at the largest face when V > 0 and at the smallest one when
 // V < 0 (the most negative value), so only one face area is needed.
-inline double tet_collapse(const std::array<Vec3, 4>& p) {
+// The collapse from 3V and the four faces' 4·area² values (in any order): for callers that
+// already hold some of them (the smoothing keeps the face opposite a moving point).
+inline double tet_collapse_from(double three_volume, const std::array<double, 4>& area4) {
     // The regular tet's value, edge a: height a·sqrt(2/3) over sqrt(sqrt(3)/4·a²). a cancels,
     // so this is exact and not the rounded 1.2408 of the paper.
     const double regular = std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0);
-    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
-    const double three_volume = 0.5 * dot(e1, cross(e2, e3));
-    // Four times the squared face areas, face i opposite vertex i.
-    const std::array<double, 4> area4{norm2(cross(p[2] - p[1], p[3] - p[1])), norm2(cross(e2, e3)),
-                                      norm2(cross(e1, e3)), norm2(cross(e1, e2))};
-    const auto [smallest, largest] = std::minmax_element(area4.begin(), area4.end());
-    const double area = 0.5 * std::sqrt(three_volume < 0 ? *smallest : *largest);
+    const auto [a, b, c, d] = area4;
+    const double area = 0.5 * std::sqrt(three_volume < 0 ? std::min({a, b, c, d}) : std::max({a, b, c, d}));
     // V < 0 implies every face has an area; a zero area here means V = 0 and the four
     // points collinear or coincident: a flat tet.
     if (!(area > 0)) return 0.0;
     return three_volume / (area * std::sqrt(area)) / regular;
+}
+
+inline double tet_collapse(const std::array<Vec3, 4>& p) {
+    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
+    const double three_volume = 0.5 * dot(e1, cross(e2, e3));
+    // Four times the squared face areas, face i opposite vertex i.
+    return tet_collapse_from(three_volume, {norm2(cross(p[2] - p[1], p[3] - p[1])), norm2(cross(e2, e3)),
+                                            norm2(cross(e1, e3)), norm2(cross(e1, e2))});
 }
 
 // Hexahedron: scaled Jacobian J_m (minimum over the 8 corners of det(e1,e2,e3)/(|e1||e2||e3|))

@@ -13,6 +13,7 @@
 
 #include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
+#include "engine/quality/quality.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
@@ -374,15 +375,9 @@ namespace {
 // tet_collapse of (a, b, c, x) from the fixed face's data: the same measure, rounded a little
 // differently (3V from n instead of from the edges at a corner).
 double collapse_with(const StarCorners::Opposite& o, const Vec3& x) {
-    const double regular = std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0);
     const Vec3 xa = o.a - x, xb = o.b - x, xc = o.c - x;
-    const double three_volume = -0.5 * dot(xa, o.n);
-    const double f1 = norm2(cross(xa, xb)), f2 = norm2(cross(xb, xc)), f3 = norm2(cross(xc, xa));
-    // The largest face when V > 0, the smallest when V < 0 (tet_collapse says why).
-    const double area4 = three_volume < 0 ? std::min({o.area4, f1, f2, f3}) : std::max({o.area4, f1, f2, f3});
-    const double area = 0.5 * std::sqrt(area4);
-    if (!(area > 0)) return 0.0;
-    return three_volume / (area * std::sqrt(area)) / regular;
+    return tet_collapse_from(-0.5 * dot(xa, o.n),
+                             {o.area4, norm2(cross(xa, xb)), norm2(cross(xb, xc)), norm2(cross(xc, xa))});
 }
 
 }  // namespace

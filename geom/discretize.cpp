@@ -55,7 +55,7 @@ TubeData discretize_tube(const TopologyIndex& index, const TubeInfo& info, doubl
     const int layers = std::max(1, static_cast<int>(std::lround(axis->length() / sweep)));
     for (const AxisSample& s : axis->stations(layers)) t.stations.push_back(station(s));
 
-    const int n = ring_nodes > 0 ? ring_nodes : ring_node_count((info.radius_min + info.radius_max) / 2, sweep);
+    const int n = tube_ring_nodes(info, sweep, ring_nodes);
     // Node 0 of both rings is where generator line 0 leaves E1 and reaches E2: the same
     // position around the axis, whatever the loops' own parametrisations.
     t.ring1 = ring(wall->loop(0), axis->generator(0).start(), n, axis->samples().front());
@@ -68,6 +68,10 @@ TubeData discretize_tube(const TopologyIndex& index, const TubeInfo& info, doubl
 int ring_node_count(double radius, double sweep_size) {
     const double around = 2 * std::numbers::pi * (radius + sweep_size / 2) / sweep_size;
     return std::max(4, 4 * static_cast<int>(std::lround(around / 4)));
+}
+
+int tube_ring_nodes(const TubeInfo& tube, double sweep_size, int ring_nodes) {
+    return ring_nodes > 0 ? ring_nodes : ring_node_count((tube.radius_min + tube.radius_max) / 2, sweep_size);
 }
 
 DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tubes, const SizePlan& plan,

@@ -26,6 +26,9 @@ struct DiscretizeOptions {
 // (r = 0.02 with St about 0.14) it gives the paper's 4.
 int ring_node_count(double radius, double sweep_size);
 
+// n for one tube: `ring_nodes` when given (> 0), else ring_node_count at its mean radius.
+int tube_ring_nodes(const TubeInfo& tube, double sweep_size, int ring_nodes);
+
 // Stations along the centre line: St apart by arc length, at least two (one layer).
 // Throws tubemesh::Error when a tube's wall cannot be followed from one loop to the other,
 // or when the plan has no positive sizes.

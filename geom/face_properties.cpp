@@ -26,4 +26,21 @@ FaceProperties face_properties(const Model& model, int face_id) {
     return p;
 }
 
+RoughMeasures rough_measures(const Model& model, const std::vector<int>& skip) {
+    RoughMeasures m;
+    GProp_GProps volume;
+    BRepGProp::VolumeProperties(model.impl().solid, volume);
+    m.volume = volume.Mass();
+    std::vector<char> skipped(static_cast<std::size_t>(model.face_count()) + 1, 0);
+    for (int f : skip)
+        if (f >= 1 && f <= model.face_count()) skipped[static_cast<std::size_t>(f)] = 1;
+    for (int f = 1; f <= model.face_count(); ++f) {
+        if (skipped[static_cast<std::size_t>(f)]) continue;
+        GProp_GProps area;
+        BRepGProp::SurfaceProperties(face_of(model, f), area);
+        m.area += area.Mass();
+    }
+    return m;
+}
+
 }  // namespace tubemesh::geom

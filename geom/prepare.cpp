@@ -8,6 +8,8 @@
 #include <unordered_set>
 
 #include "geom/discretize.hpp"
+#include "geom/face_properties.hpp"
+#include "geom/sizing_distances.hpp"
 #include "geom/surface_map_occt.hpp"
 
 namespace tubemesh::geom {
@@ -46,6 +48,27 @@ void refuse_contradictory_sizes(const SizePlan& plan, const SizingOptions& given
                                 source_text(plan.size_source)));
 }
 
+// The element budget (element_budget.hpp) on the planned sizes, before discretize allocates
+// stations and edge points for them.
+ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
+                          const PrepareOptions& options) {
+    if (options.budget.max_elements < 0)
+        throw Error(fmt::format("the element limit must be positive (0: this machine's memory), got {}",
+                                options.budget.max_elements));
+    std::vector<int> walls;
+    std::vector<TubeExtent> extents;
+    for (const TubeInfo& t : tubes.tubes) {
+        walls.insert(walls.end(), t.faces.begin(), t.faces.end());
+        extents.push_back({t.length, t.radius_max, tube_ring_nodes(t, plan.sweep_size, options.discretize.ring_nodes)});
+    }
+    const RoughMeasures m = rough_measures(model, walls);
+    const BoundingBox b = non_wall_box(model, tubes.tubes);
+    const BudgetContext context{plan.size_source, plan.sweep_source,
+                                fmt::format("{:.6g} x {:.6g} x {:.6g} {}", b.max.x - b.min.x, b.max.y - b.min.y,
+                                            b.max.z - b.min.z, model.report().length_unit)};
+    return check_element_budget(m.volume, m.area, extents, plan.size, plan.sweep_size, options.budget, context);
+}
+
 std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan) {
     std::vector<std::string> w;
     if (tubes.tubes.empty())
@@ -62,6 +85,8 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     p.sizing.size = options.size;
     p.sizing.sweep_size = options.sweep_size;
     p.discretize.ring_nodes = options.circumferential;
+    p.budget.max_elements = options.max_elements;
+    p.budget.sweep = options.sweep;
     p.progress = options.progress;
     return p;
 }
@@ -88,6 +113,7 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
         PhaseProgress progress(options.progress, "sizes", 1);
         p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
         refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
+        p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
         progress.finish();
     }
     PhaseReport sizes{"sizes", seconds_since(t0), {{"rule changes", double(p.plan.changes.size())}}, {}};

@@ -18,6 +18,7 @@
 #include "engine/geometry/tube_data.hpp"
 #include "engine/pipeline/pipeline.hpp"
 #include "geom/discretize.hpp"
+#include "geom/element_budget.hpp"
 #include "geom/model.hpp"
 #include "geom/sizing.hpp"
 #include "geom/tubes.hpp"
@@ -28,6 +29,7 @@ struct PrepareOptions {
     SizingOptions sizing;  // S and St; 0 picks geom's defaults (sizing.hpp)
     TubeOptions tubes;
     DiscretizeOptions discretize;  // ring_nodes = n; 0 picks ring_node_count per tube
+    ElementBudget budget;          // checked right after the sizes are planned
     ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
 };
 
@@ -38,6 +40,7 @@ class PreparedModel {
 public:
     TubeSearch tubes;
     SizePlan plan;
+    ElementEstimate estimate;  // the lower bound options.budget was checked on
     DiscreteGeometry geometry;
     std::vector<std::unique_ptr<SurfaceMap>> maps;  // element i: face id i + 1
     std::vector<PhaseReport> phases;                // "tubes", "sizes", "discretize"
@@ -52,7 +55,9 @@ public:
     std::vector<std::string> report_lines() const;
 };
 
-// Throws tubemesh::Error for bad user sizes or geometry that cannot be discretised.
+// Throws tubemesh::Error for bad user sizes, sizes that give more elements than
+// options.budget allows (before any phase allocates for them), or geometry that cannot be
+// discretised.
 PreparedModel prepare_model(const Model& model, const PrepareOptions& options = {});
 
 }  // namespace tubemesh::geom

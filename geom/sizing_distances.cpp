@@ -75,15 +75,22 @@ double polyline_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
     return best;
 }
 
-double box_diagonal(const Model& model, const std::vector<TubeInfo>& tubes) {
+BoundingBox non_wall_box(const Model& model, const std::vector<TubeInfo>& tubes) {
     std::set<int> walls;
     for (const TubeInfo& t : tubes) walls.insert(t.faces.begin(), t.faces.end());
     Bnd_Box box;
     for (int f = 1; f <= model.face_count(); ++f)
         if (!walls.count(f)) BRepBndLib::Add(face_of(model, f), box);
     if (box.IsVoid()) BRepBndLib::Add(solid_of(model), box);
-    if (box.IsVoid()) return 0;
-    return std::sqrt(box.SquareExtent());
+    BoundingBox b;
+    if (!box.IsVoid()) box.Get(b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+    return b;
+}
+
+double box_diagonal(const Model& model, const std::vector<TubeInfo>& tubes) {
+    const BoundingBox b = non_wall_box(model, tubes);
+    const double dx = b.max.x - b.min.x, dy = b.max.y - b.min.y, dz = b.max.z - b.min.z;
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& tubes) {

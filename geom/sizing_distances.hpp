@@ -30,6 +30,8 @@ Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& t
 // pipe wall. Not the walls either: a B-spline wall's control polygon inflates a plain box, and
 // the walls lie inside the box of the other faces anyway.
 double box_diagonal(const Model& model, const std::vector<TubeInfo>& tubes);
+// That box itself (all zero for a model without faces).
+BoundingBox non_wall_box(const Model& model, const std::vector<TubeInfo>& tubes);
 
 // Smallest distance between two polylines (each at least one point).
 double polyline_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b);

@@ -105,6 +105,10 @@ struct MeshOptions {
     tets::TetStepOptions tets;
     // oneTBB worker threads for the whole run; 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
+    // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
+    // from the solid's volume and area, S, St and the tubes' length (geom/element_budget.hpp).
+    // 0 (default): what this machine's memory holds (at 150 bytes per element).
+    double max_elements = 0;
     // Determinism: the same input and options always give the same mesh, byte for byte, for
     // any thread count (the sweep, surface and pyramid phases by construction, the tet step
     // because its Delaunay passes split into tets.partitions parts whatever the thread count;

@@ -52,6 +52,15 @@ protected:
     }
 };
 
+// A size for another unit (or a typo) that no machine could mesh: refused before meshing.
+TEST_F(CliMeshErrors, SizeTooSmallForTheSolid) {
+    expect_error(q(pipe()), "--size 1e-3 --sweep-size 5e-4", "the mesh size S = 0.001 (given) is too small");
+}
+
+TEST_F(CliMeshErrors, MoreElementsThanMaxElements) {
+    expect_error(q(pipe()), "--max-elements 1000", "more than --max-elements 1e+03");
+}
+
 TEST_F(CliMeshErrors, MissingFile) { expect_error(q(dir / "nope.step"), "", "no such file"); }
 
 TEST_F(CliMeshErrors, NotACadFile) {

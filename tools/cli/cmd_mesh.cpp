@@ -1,6 +1,6 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
+// [--max-elements N] [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
 // (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
 // progress, print the phases and Table 1, and write the mesh to every OUT (format by
 // extension: .msh, .vtu, .inp) and the report as JSON.
@@ -45,6 +45,7 @@ struct MeshArgs {
     double gradation = defaults.tets.gradation;
     unsigned tet_parts = defaults.tets.partitions;
     int threads = 0;
+    double max_elements = 0;
     int solid = 0;
     std::string report;
     std::string until_name = stage_name(kLastStage);
@@ -132,6 +133,7 @@ MeshOptions mesh_options(const MeshArgs& a, ProgressLine& progress) {
     o.tets.gradation = a.gradation;
     o.tets.partitions = a.tet_parts;
     o.threads = a.threads;
+    o.max_elements = a.max_elements;
     o.progress = progress.callback();
     return o;
 }
@@ -175,6 +177,10 @@ Command add_mesh_command(CLI::App& app) {
                                 "the same for any --threads; 0: one per thread, the mesh then depends on it)",
                                 args->tet_parts))
         ->check(CLI::Range(0, 4096));
+    cmd->add_option("--max-elements", args->max_elements,
+                    "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "
+                    "volume, area, S, St and tube lengths; default: what this machine's memory holds)")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
     cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
         ->check(CLI::Range(1, 1 << 30));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/tets/tet_domain.hpp"
 
@@ -64,6 +65,19 @@ double ControlSpace::size(const double* p) const {
     double h = far_size_;
     for (index_t i = 0; i < found; ++i) h = std::min(h, node_size_[idx[i]] + slope_ * std::sqrt(d2[i]));
     return h;
+}
+
+ControlSpace::Sample ControlSpace::sample(const double* p) const {
+    NearestBuffer buffer(neighbours_);
+    index_t* idx = buffer.index();
+    double* d2 = buffer.distance_squared();
+    const index_t found = index_->nearest_unordered({p[0], p[1], p[2]}, neighbours_, idx, d2);
+    Sample s{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    for (index_t i = 0; i < found; ++i) {
+        s.uncapped = std::min(s.uncapped, node_size_[idx[i]] + slope_ * std::sqrt(d2[i]));
+        s.nearest_front = std::min(s.nearest_front, std::sqrt(d2[i]));
+    }
+    return s;
 }
 
 }  // namespace tubemesh::tets

@@ -32,6 +32,12 @@ public:
 
     // Target edge length at p; thread-safe.
     double size(const double* p) const;
+    // size(p) before the cap at the far size, and the distance from p to the nearest front node.
+    struct Sample {
+        double uncapped = 0;
+        double nearest_front = 0;
+    };
+    Sample sample(const double* p) const;
     // Local size of front node i (mean incident front edge length).
     double node_size(index_t i) const { return node_size_[i]; }
     double far_size() const { return far_size_; }

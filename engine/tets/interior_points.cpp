@@ -56,6 +56,13 @@ index_t walk_to(const MeshView& m, index_t tet, const double* p, std::uint32_t s
     return kNoIndex;
 }
 
+// The node of the body-centred cubic lattice with cube edge a (a corner at the origin) nearest p.
+Vec3 nearest_bcc_node(const Vec3& p, double a) {
+    const Vec3 corner{a * std::round(p.x / a), a * std::round(p.y / a), a * std::round(p.z / a)};
+    const Vec3 centre{a * (std::floor(p.x / a) + 0.5), a * (std::floor(p.y / a) + 0.5), a * (std::floor(p.z / a) + 0.5)};
+    return distance2(p, corner) <= distance2(p, centre) ? corner : centre;
+}
+
 }  // namespace
 
 std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace& space) {
@@ -116,13 +123,14 @@ std::vector<index_t> active_faces(const MeshView& m, double tolerance, TooBigMem
     return faces;
 }
 
-std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space) {
+std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space,
+                                      const FarLattice& lattice) {
     ProposalMemo memo;
-    return propose_points(m, faces, space, memo);
+    return propose_points(m, faces, space, memo, lattice);
 }
 
 std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space,
-                                      ProposalMemo& memo) {
+                                      ProposalMemo& memo, const FarLattice& lattice) {
     constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
     const std::vector<ProposalMemo::Entry>& before = memo.entries;
     std::vector<ProposalMemo::Entry> now(faces.size());
@@ -160,11 +168,27 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 const Vec3 first = apex((m.h[v[node[0]]] + m.h[v[node[1]]] + m.h[v[node[2]]]) / 3.0);
                 const Vec3 mid = 0.5 * (g + first);
                 const double mq[3] = {mid.x, mid.y, mid.z};
-                const Vec3 p = apex(space.size(mq));
+                const double h_mid = space.size(mq);
+                Vec3 p = apex(h_mid);
+                e.h = kUnknown;
+                // Snap only where h is the far size (the lattice's spacing is right there) and the
+                // front is far enough for advancing-front layers to fill the seam between them.
+                // The test at the node needs one more nearest-node query: only ideal points
+                // already at the far size ask it (on the serpentine lift, none of whose tets
+                // reach it, asking every one cost 10-20 % of the refinement).
+                const double far = space.far_size();
+                if (lattice.spacing > 0 && h_mid >= far) {
+                    const Vec3 node = nearest_bcc_node(p, lattice.spacing * far);
+                    const double nq[3] = {node.x, node.y, node.z};
+                    const ControlSpace::Sample at_node = space.sample(nq);
+                    if (at_node.uncapped >= far && at_node.nearest_front >= lattice.clearance * far) {
+                        p = node;
+                        e.h = far;
+                    }
+                }
                 e.p[0] = p.x;
                 e.p[1] = p.y;
                 e.p[2] = p.z;
-                e.h = kUnknown;
             }
             known[i] = 1;
             const index_t holder = walk_to(m, t, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);

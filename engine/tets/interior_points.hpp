@@ -59,17 +59,27 @@ struct TooBigMemo {
 // the same faces as without it.
 std::vector<index_t> active_faces(const MeshView& mesh, double tolerance, TooBigMemo& memo);
 
+// The far-field lattice: where the size field is the far size S and the front is far away, an
+// ideal point is replaced by the nearest node of a body-centred cubic lattice (cube corners and
+// centres, a corner at the origin). Advancing-front points there sit at random offsets from
+// one another, and flips and smoothing only partly repair that; the lattice's Delaunay tets
+// are all alike, with collapse 0.958. The front-near and graded parts stay advancing front.
+struct FarLattice {
+    double spacing = 0;    // cube edge over S; 0: no lattice
+    double clearance = 0;  // least distance from a lattice point to the nearest front node, over S
+};
+
 // One ideal point per active face: the apex of a near-regular tet of size h on the face, on
 // the side of the face's tet, h asked of `space` halfway to the apex that the mean h of the
 // face's points gives; dropped when a walk from that tet leaves the region through the front.
 // Parallel; the order follows `faces`.
 std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const index_t> faces,
-                                      const ControlSpace& space);
+                                      const ControlSpace& space, const FarLattice& lattice = {});
 
 // Ideal points of the previous round's active faces, by face code 4*t+f with t's point ids in
 // order: the ideal point and its h depend only on those, so a face that is active again in an
 // unchanged tet reuses them (its walk to the holding tet, which depends on the mesh, is redone).
-// Valid for one point array and size array (appended to only) and one ControlSpace.
+// Valid for one point array and size array (appended to only), one ControlSpace and one FarLattice.
 struct ProposalMemo {
     struct Entry {
         index_t face;
@@ -84,7 +94,7 @@ struct ProposalMemo {
 // propose_points with the ideal points of the previous call reused from `memo` (and this call's
 // kept there for the next); the same candidates as without it.
 std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const index_t> faces, const ControlSpace& space,
-                                      ProposalMemo& memo);
+                                      ProposalMemo& memo, const FarLattice& lattice = {});
 
 // Keeps the candidates farther than `reject_factor` * h from every point in `existing`
 // (3 coordinates each) and from every candidate kept before them (greedy in order, so the

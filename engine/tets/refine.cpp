@@ -62,12 +62,13 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         // h at every point, by kernel id: the front's and Steiner points' now, each inserted
         // point's from its candidate.
         std::vector<double> sizes = point_sizes(domain.xyz, space);
+        const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
             const MeshView view{tri.store(), domain.xyz, sizes};
             const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
             stats.too_big_left = static_cast<index_t>(faces.size());
             if (faces.empty()) break;
-            std::vector<Candidate> cand = propose_points(view, faces, space, proposals);
+            std::vector<Candidate> cand = propose_points(view, faces, space, proposals, lattice);
             stats.candidates += cand.size();
             const std::vector<index_t> keep = select_points(cand, live, options.reject_factor);
             stats.rejected_close += cand.size() - keep.size();

@@ -12,9 +12,12 @@
 #include <set>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "engine/delaunay/delaunay.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/tets/optimise.hpp"
+#include "engine/tets/point_colouring.hpp"
 #include "engine/tets/tet_flips.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_volume.hpp"
@@ -239,6 +242,67 @@ TEST(test_tets_optimise, SameArraysForOneAndTwoThreads) {
     EXPECT_EQ(one.xyz, two.xyz);
     EXPECT_TRUE(std::ranges::equal(one.tets.vertices(), two.tets.vertices()));
     EXPECT_TRUE(std::ranges::equal(one.tets.neighbours(), two.tets.neighbours()));
+}
+
+// The serial loops build_incidence and colour_points replaced, as the reference they must match.
+Incidence serial_incidence(const TetDomain& dom) {
+    Incidence inc;
+    inc.offsets.assign(std::size_t{dom.point_count()} + 1, 0);
+    const auto v = dom.tets.vertices();
+    for (index_t p : v) ++inc.offsets[p + 1];
+    for (index_t p = 0; p < dom.point_count(); ++p) inc.offsets[p + 1] += inc.offsets[p];
+    inc.tets.resize(v.size());
+    std::vector<index_t> fill(inc.offsets.begin(), inc.offsets.end() - 1);
+    for (std::size_t k = 0; k < v.size(); ++k) inc.tets[fill[v[k]]++] = static_cast<index_t>(k / 4);
+    return inc;
+}
+
+std::vector<std::vector<index_t>> serial_colouring(const TetDomain& dom, const Incidence& inc,
+                                                   const std::vector<index_t>& points) {
+    std::vector<std::uint32_t> colour(dom.point_count(), kNoIndex);
+    std::vector<index_t> seen;
+    std::vector<std::vector<index_t>> classes;
+    for (index_t p : points) {
+        for (index_t t : inc.of(p))
+            for (int i = 0; i < 4; ++i) {
+                const index_t q = dom.tets.vertex(t)[i];
+                if (q != p && colour[q] != kNoIndex) seen[colour[q]] = p;
+            }
+        std::uint32_t c = 0;
+        while (c < seen.size() && seen[c] == p) ++c;
+        if (c == seen.size()) {
+            seen.push_back(kNoIndex);
+            classes.emplace_back();
+        }
+        colour[p] = c;
+        classes[c].push_back(p);
+    }
+    return classes;
+}
+
+// Large enough for several chunks of vertex rows and of points; 1 and 2 threads.
+TEST(test_tets_optimise, IncidenceAndColouringMatchTheSerialGreedy) {
+    const TetDomain d = sphere_domain(2000, 14000, 11);
+    ASSERT_GT(d.tets.size(), 70000u);
+    const Incidence expected = serial_incidence(d);
+    std::vector<index_t> all, some;
+    for (index_t p = 0; p < d.point_count(); ++p) {
+        all.push_back(p);
+        if (p % 3 != 1) some.push_back(p);
+    }
+    for (int threads : {1, 2}) {
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            const Incidence inc = build_incidence(d);
+            EXPECT_EQ(inc.offsets, expected.offsets);
+            EXPECT_EQ(inc.tets, expected.tets);
+            std::vector<std::uint32_t> colour(d.point_count(), kNoIndex);
+            for (const auto* points : {&all, &some}) {
+                EXPECT_EQ(colour_points(d, inc, *points, colour), serial_colouring(d, expected, *points));
+                EXPECT_TRUE(std::ranges::all_of(colour, [](std::uint32_t c) { return c == kNoIndex; }));
+            }
+        });
+    }
 }
 
 TEST(test_tets_optimise, RejectsBadOptions) {

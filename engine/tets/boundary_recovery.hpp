@@ -22,7 +22,9 @@
 namespace tubemesh::tets {
 
 struct RecoveryOptions {
-    // Threads of the Delaunay kernel; 0 = oneTBB's default. Recovery itself is serial.
+    // Threads of the Delaunay kernel and of recovery's parallel loops (front checks, which
+    // front elements are present, the tets beside the front); 0 = the caller's oneTBB arena. The
+    // flips and Steiner points are serial.
     unsigned threads = 0;
     // Spatial parts of the Delaunay kernel (DelaunayOptions::partitions); 0 = one per thread.
     // The result depends on the input and this count only.

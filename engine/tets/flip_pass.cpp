@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "engine/tets/tet_flips.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
@@ -151,25 +152,36 @@ void plan_claims(const TetDomain& dom, const FlipPlan& plan, const std::vector<i
 std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const std::vector<std::uint8_t>* active,
                                 const std::vector<double>& q) {
     const index_t n = dom.tets.size();
-    // Sorted as (collapse, tet) pairs: a Candidate holds a whole plan, too big to shuffle.
+    // Sorted as (collapse, tet) pairs: a Candidate holds a whole plan, too big to shuffle. Each
+    // fixed chunk of slots lists its own, the lists are joined in chunk order, and the pairs
+    // are distinct (one per tet), so the parallel sort gives the one sorted order.
+    constexpr index_t kChunk = 16384;
+    const index_t chunks = (n + kChunk - 1) / kChunk;
+    std::vector<std::vector<std::pair<double, index_t>>> listed(chunks);
+    tbb::parallel_for(index_t{0}, chunks, [&](index_t c) {
+        for (index_t t = c * kChunk; t < std::min(n, (c + 1) * kChunk); ++t) {
+            if (!(q[t] < threshold)) continue;
+            const index_t* v = dom.tets.vertex(t);
+            if (v[0] == kFreeSlot ||
+                (active && !(*active)[v[0]] && !(*active)[v[1]] && !(*active)[v[2]] && !(*active)[v[3]]))
+                continue;
+            listed[c].emplace_back(q[t], t);
+        }
+    });
     std::vector<std::pair<double, index_t>> order;
-    for (index_t t = 0; t < n; ++t) {
-        if (!(q[t] < threshold)) continue;
-        const index_t* v = dom.tets.vertex(t);
-        if (v[0] == kFreeSlot ||
-            (active && !(*active)[v[0]] && !(*active)[v[1]] && !(*active)[v[2]] && !(*active)[v[3]]))
-            continue;
-        order.emplace_back(q[t], t);
-    }
-    std::sort(order.begin(), order.end());
+    for (const auto& l : listed) order.insert(order.end(), l.begin(), l.end());
+    tbb::parallel_sort(order.begin(), order.end());
     std::vector<Candidate> out(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        Candidate& c = out[i];
-        const index_t* v = dom.tets.vertex(order[i].second);
-        c.tet = order[i].second;
-        c.vertices = {v[0], v[1], v[2], v[3]};
-        c.collapse = order[i].first;
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.size(), 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                              Candidate& c = out[i];
+                              const index_t* v = dom.tets.vertex(order[i].second);
+                              c.tet = order[i].second;
+                              c.vertices = {v[0], v[1], v[2], v[3]};
+                              c.collapse = order[i].first;
+                          }
+                      });
     return out;
 }
 
@@ -285,13 +297,8 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         }
         pending.swap(waiting);
     }
-    if (collapses) {
-        // compact_tets keeps the live tets' order.
-        collapses->clear();
-        for (index_t t = 0; t < dom.tets.size(); ++t)
-            if (dom.tets.vertex(t)[0] != kFreeSlot) collapses->push_back(q[t]);
-    }
-    compact_tets(dom);
+    compact_tets(dom, &q);
+    if (collapses) *collapses = std::move(q);
     return counts;
 }
 

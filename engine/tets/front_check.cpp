@@ -5,6 +5,8 @@
 #include <string>
 #include <tuple>
 
+#include <tbb/parallel_sort.h>
+
 namespace tubemesh::tets {
 
 namespace {
@@ -16,7 +18,7 @@ std::string tri_name(std::span<const index_t> front, std::size_t t) {
 
 }  // namespace
 
-std::vector<std::pair<index_t, index_t>> check_front(std::span<const index_t> front, index_t point_count) {
+FrontElements check_front(std::span<const index_t> front, index_t point_count) {
     if (front.size() % 3 != 0) throw Error("tet front: the triangle list's length is not a multiple of 3");
     const std::size_t n = front.size() / 3;
     if (n < 4) throw Error("tet front: a closed surface needs at least 4 triangles, got " + std::to_string(n));
@@ -44,15 +46,19 @@ std::vector<std::pair<index_t, index_t>> check_front(std::span<const index_t> fr
         std::sort(s.begin(), s.begin() + 3);
         sorted_tris[t] = s;
     }
-    std::sort(sorted_tris.begin(), sorted_tris.end());
+    tbb::parallel_sort(sorted_tris.begin(), sorted_tris.end());
     for (std::size_t i = 1; i < n; ++i)
         if (std::equal(sorted_tris[i].begin(), sorted_tris[i].begin() + 3, sorted_tris[i - 1].begin()))
             throw Error("tet front: " + tri_name(front, sorted_tris[i - 1][3]) + " and " +
                         tri_name(front, sorted_tris[i][3]) + " have the same points");
-    std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    // (lo, hi, tri) is distinct for every half-edge: no triangle repeats a point.
+    tbb::parallel_sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
         return std::tie(x.lo, x.hi, x.tri) < std::tie(y.lo, y.hi, y.tri);
     });
-    std::vector<std::pair<index_t, index_t>> edges;
+    FrontElements out;
+    out.triangles.resize(n);
+    for (std::size_t i = 0; i < n; ++i) out.triangles[i] = {sorted_tris[i][0], sorted_tris[i][1], sorted_tris[i][2]};
+    std::vector<std::pair<index_t, index_t>>& edges = out.edges;
     edges.reserve(half.size() / 2);
     for (std::size_t i = 0; i < half.size();) {
         std::size_t j = i;
@@ -69,7 +75,7 @@ std::vector<std::pair<index_t, index_t>> check_front(std::span<const index_t> fr
         edges.emplace_back(half[i].lo, half[i].hi);
         i = j;
     }
-    return edges;
+    return out;
 }
 
 }  // namespace tubemesh::tets

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <limits>
 #include <string>
@@ -78,12 +79,16 @@ void check(const OptimiseOptions& o) {
 // moves) a change can have touched. Clears `changed`.
 void points_near(const TetDomain& dom, std::vector<std::uint8_t>& changed, std::vector<std::uint8_t>& near) {
     near.assign(changed.size(), 0);
-    const index_t n = dom.tets.size();
-    for (index_t t = 0; t < n; ++t) {
-        const index_t* v = dom.tets.vertex(t);
-        if (changed[v[0]] || changed[v[1]] || changed[v[2]] || changed[v[3]])
-            for (int i = 0; i < 4; ++i) near[v[i]] = 1;
-    }
+    // Threads may flag one point at once, always with the same value: relaxed stores suffice.
+    const auto flag = [&](index_t p) { std::atomic_ref<std::uint8_t>(near[p]).store(1, std::memory_order_relaxed); };
+    tbb::parallel_for(tbb::blocked_range<index_t>(0, dom.tets.size(), 4096),
+                      [&](const tbb::blocked_range<index_t>& r) {
+                          for (index_t t = r.begin(); t != r.end(); ++t) {
+                              const index_t* v = dom.tets.vertex(t);
+                              if (changed[v[0]] || changed[v[1]] || changed[v[2]] || changed[v[3]])
+                                  for (int i = 0; i < 4; ++i) flag(v[i]);
+                          }
+                      });
     std::fill(changed.begin(), changed.end(), 0);
 }
 

@@ -14,12 +14,6 @@ using predicates::orient3d;
 
 namespace {
 
-
-std::uint64_t edge_key(index_t u, index_t v) {
-    if (u > v) std::swap(u, v);
-    return (std::uint64_t{u} << 32) | v;
-}
-
 bool positive(const RecoveryMesh& m, const Tet& t) {
     return orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) > 0;
 }
@@ -32,26 +26,12 @@ double collapse(const RecoveryMesh& m, const Tet& t) {
 
 }  // namespace
 
-std::size_t FrontLocks::FaceHash::operator()(const std::array<index_t, 3>& k) const {
-    std::uint64_t h = k[0];
-    h = h * 0x9E3779B97F4A7C15ull + k[1];
-    h = h * 0x9E3779B97F4A7C15ull + k[2];
-    return static_cast<std::size_t>(h ^ (h >> 29));
+bool FrontLocks::edge(index_t u, index_t v) const {
+    return std::binary_search(front_.edges.begin(), front_.edges.end(), std::pair{std::min(u, v), std::max(u, v)});
 }
-
-FrontLocks::FrontLocks(std::span<const index_t> front) {
-    edges_.reserve(front.size());
-    faces_.reserve(front.size() / 3);
-    for (std::size_t i = 0; i + 2 < front.size(); i += 3) {
-        for (int k = 0; k < 3; ++k) edges_.insert(edge_key(front[i + k], front[i + (k + 1) % 3]));
-        faces_.insert(sorted3(front[i], front[i + 1], front[i + 2]));
-    }
-}
-
-bool FrontLocks::edge(index_t u, index_t v) const { return edges_.count(edge_key(u, v)) != 0; }
 
 bool FrontLocks::face(index_t x, index_t y, index_t z) const {
-    return lock_faces && faces_.count(sorted3(x, y, z)) != 0;
+    return lock_faces && std::binary_search(front_.triangles.begin(), front_.triangles.end(), sorted3(x, y, z));
 }
 
 bool flip23(RecoveryMesh& m, index_t t, int f, const Target* target, const FrontLocks& locks, FlipCounters& c) {

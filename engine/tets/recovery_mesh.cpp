@@ -38,7 +38,6 @@ RecoveryMesh::RecoveryMesh(std::vector<double> xyz, const delaunay::TetStore& te
     incident_.assign(point_count(), kNoIndex);
     for (index_t t = 0; t < n; ++t)
         for (int i = 0; i < 4; ++i) incident_[vertex_[4 * std::size_t{t} + i]] = t;
-    mark_.assign(n, 0);
 }
 
 index_t RecoveryMesh::add_point(const double* p) {
@@ -47,7 +46,8 @@ index_t RecoveryMesh::add_point(const double* p) {
     return point_count() - 1;
 }
 
-std::uint32_t RecoveryMesh::next_epoch() {
+std::uint32_t SlotMarks::next(index_t slots) {
+    if (mark_.size() < slots) mark_.resize(slots, 0);
     if (++epoch_ == 0) {
         std::fill(mark_.begin(), mark_.end(), 0u);
         epoch_ = 1;
@@ -55,29 +55,28 @@ std::uint32_t RecoveryMesh::next_epoch() {
     return epoch_;
 }
 
-void RecoveryMesh::ball(index_t v, std::vector<index_t>& out) {
+void RecoveryMesh::ball(index_t v, std::vector<index_t>& out, SlotMarks& marks) const {
     out.clear();
     const index_t t0 = incident_[v];
     if (t0 == kNoIndex) return;
-    const std::uint32_t e = next_epoch();
+    const std::uint32_t e = marks.next(slot_count());
     out.push_back(t0);
-    set_mark(t0, e);
+    marks.set(t0, e);
     for (std::size_t k = 0; k < out.size(); ++k) {
         const index_t t = out[k];
         const int iv = local_of(vertex(t), v);
         for (int f = 0; f < 4; ++f) {
             if (f == iv) continue;
             const index_t n = neighbour_[4 * std::size_t{t} + f];
-            if (n == kNoAdjacent || marked(n >> 2, e)) continue;
-            set_mark(n >> 2, e);
+            if (n == kNoAdjacent || marks.marked(n >> 2, e)) continue;
+            marks.set(n >> 2, e);
             out.push_back(n >> 2);
         }
     }
 }
 
-index_t RecoveryMesh::find_edge(index_t a, index_t b) {
-    std::vector<index_t>& around = slots_;
-    ball(a, around);
+index_t RecoveryMesh::find_edge(index_t a, index_t b, std::vector<index_t>& around, SlotMarks& marks) const {
+    ball(a, around, marks);
     for (index_t t : around)
         if (local_of(vertex(t), b) >= 0) return t;
     return kNoIndex;
@@ -115,21 +114,23 @@ std::array<index_t, 3> RecoveryMesh::face(index_t t, int f) const {
     return {v[node[0]], v[node[1]], v[node[2]]};
 }
 
-index_t RecoveryMesh::find_face(index_t a, index_t b, index_t c, int side, int* local) {
-    std::vector<index_t>& around = slots_;
-    ball(a, around);
+RecoveryMesh::FaceSides RecoveryMesh::find_face(index_t a, index_t b, index_t c, std::vector<index_t>& around,
+                                                SlotMarks& marks) const {
+    FaceSides sides;
+    ball(a, around, marks);
     for (index_t t : around) {
         const index_t* v = vertex(t);
         const int ib = local_of(v, b), ic = local_of(v, c);
         if (ib < 0 || ic < 0) continue;
         const int ia = local_of(v, a);
         const int id = 6 - ia - ib - ic;
-        if (permutation_sign(ia, ib, ic, id) == side) {
-            if (local) *local = id;
-            return t;
-        }
+        const int side = permutation_sign(ia, ib, ic, id) > 0 ? 1 : 0;
+        if (sides.tet[side] != kNoIndex) continue;
+        sides.tet[side] = t;
+        sides.local[side] = id;
+        if (sides.tet[1 - side] != kNoIndex) break;
     }
-    return kNoIndex;
+    return sides;
 }
 
 bool RecoveryMesh::replace(std::span<const index_t> old_tets, std::span<const Tet> new_tets,
@@ -191,7 +192,6 @@ bool RecoveryMesh::replace(std::span<const index_t> old_tets, std::span<const Te
             slots.push_back(slot_count());
             vertex_.resize(vertex_.size() + 4);
             neighbour_.resize(neighbour_.size() + 4);
-            mark_.push_back(0);
         }
     }
     for (; reused < old_tets.size(); ++reused) free_.push_back(old_tets[reused]);

@@ -29,6 +29,20 @@ inline std::array<index_t, 3> sorted3(index_t a, index_t b, index_t c) {
 
 using Tet = std::array<index_t, 4>;
 
+// Epoch marks on tet slots for traversals: next() invalidates every mark. The mesh keeps its own
+// for its modifications; a thread that reads the mesh while others do (nothing modifies it
+// meanwhile) brings its own to ball, find_edge and find_face.
+class SlotMarks {
+public:
+    std::uint32_t next(index_t slots);  // also grows the marks to `slots`
+    bool marked(index_t t, std::uint32_t epoch) const { return mark_[t] == epoch; }
+    void set(index_t t, std::uint32_t epoch) { mark_[t] = epoch; }
+
+private:
+    std::vector<std::uint32_t> mark_;
+    std::uint32_t epoch_ = 0;
+};
+
 class RecoveryMesh {
 public:
     // Takes the kernel's tets over `xyz` (3 per point; box corners included).
@@ -49,9 +63,9 @@ public:
     index_t incident_tet(index_t v) const { return incident_[v]; }
 
     // All live tets containing v (its ball), in a deterministic order.
-    void ball(index_t v, std::vector<index_t>& out);
+    void ball(index_t v, std::vector<index_t>& out) { ball(v, out, marks_); }
     // A live tet containing both a and b, or kNoIndex.
-    index_t find_edge(index_t a, index_t b);
+    index_t find_edge(index_t a, index_t b) { return find_edge(a, b, slots_, marks_); }
     // The tets around edge ab and the ring of their other vertices, ordered so that tet i is
     // (a, b, ring[i], ring[i+1 mod n]) and orient3d(a, b, ring[i], ring[i+1]) > 0. False when
     // the edge is missing or on the box hull (its ring is open).
@@ -59,9 +73,17 @@ public:
     // The face of tet t opposite local vertex f is a face of the mesh; its vertices with the
     // normal pointing out of t.
     std::array<index_t, 3> face(index_t t, int f) const;
-    // The tet with face abc (any order), and the local index of its fourth vertex, on the side
-    // where orient3d(a, b, c, d) has sign `side` (+1 or -1); kNoIndex when there is none.
-    index_t find_face(index_t a, index_t b, index_t c, int side, int* local = nullptr);
+    // The tets with face abc (any order) on its two sides: tet[0] where orient3d(a, b, c, d) < 0,
+    // tet[1] where it is > 0, d their fourth vertex (at local[i]); kNoIndex where there is none.
+    struct FaceSides {
+        std::array<index_t, 2> tet{kNoIndex, kNoIndex};
+        std::array<int, 2> local{-1, -1};
+    };
+    FaceSides find_face(index_t a, index_t b, index_t c, std::vector<index_t>& around, SlotMarks& marks) const;
+    // ball and find_edge for concurrent readers (and find_face above), each with its own
+    // scratch (`around`: the ball of a).
+    void ball(index_t v, std::vector<index_t>& out, SlotMarks& marks) const;
+    index_t find_edge(index_t a, index_t b, std::vector<index_t>& around, SlotMarks& marks) const;
 
     // Removes `old_tets` and adds `new_tets` (each positively oriented, checked by the caller)
     // filling the same region; new slots reuse the old ones first. Returns false, changing
@@ -69,10 +91,10 @@ public:
     // (e.g. a contraction that would glue two faces). The new tets' slots go to `added`.
     bool replace(std::span<const index_t> old_tets, std::span<const Tet> new_tets, std::vector<index_t>* added = nullptr);
 
-    // Epoch marks on tets for traversals: next_epoch() invalidates all marks.
-    std::uint32_t next_epoch();
-    bool marked(index_t t, std::uint32_t epoch) const { return mark_[t] == epoch; }
-    void set_mark(index_t t, std::uint32_t epoch) { mark_[t] = epoch; }
+    // The mesh's own epoch marks on tets (SlotMarks) for traversals.
+    std::uint32_t next_epoch() { return marks_.next(slot_count()); }
+    bool marked(index_t t, std::uint32_t epoch) const { return marks_.marked(t, epoch); }
+    void set_mark(index_t t, std::uint32_t epoch) { marks_.set(t, epoch); }
 
     // Live tets, compacted into a kernel store (neighbours renumbered).
     delaunay::TetStore compact(std::span<const std::uint8_t> keep) const;
@@ -83,8 +105,7 @@ private:
     std::vector<index_t> neighbour_;
     std::vector<index_t> incident_;
     std::vector<index_t> free_;
-    std::vector<std::uint32_t> mark_;
-    std::uint32_t epoch_ = 0;
+    SlotMarks marks_;
     // Scratch of replace().
     struct BoundaryFace {
         std::array<index_t, 3> key;  // sorted vertex ids

@@ -14,57 +14,12 @@
 #include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 #include "engine/quality/quality.hpp"
+#include "engine/tets/point_colouring.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 
 namespace {
-
-// Point -> tets incidence as offsets + indices, tets in increasing order for every point.
-struct Incidence {
-    std::vector<index_t> offsets;
-    std::vector<index_t> tets;
-    std::span<const index_t> of(index_t p) const { return {tets.data() + offsets[p], offsets[p + 1] - offsets[p]}; }
-};
-
-Incidence build_incidence(const TetDomain& dom) {
-    Incidence inc;
-    const index_t points = dom.point_count();
-    inc.offsets.assign(std::size_t{points} + 1, 0);
-    const auto v = dom.tets.vertices();
-    for (index_t p : v) ++inc.offsets[p + 1];
-    for (index_t p = 0; p < points; ++p) inc.offsets[p + 1] += inc.offsets[p];
-    inc.tets.resize(v.size());
-    std::vector<index_t> fill(inc.offsets.begin(), inc.offsets.end() - 1);
-    for (std::size_t k = 0; k < v.size(); ++k) inc.tets[fill[v[k]]++] = static_cast<index_t>(k / 4);
-    return inc;
-}
-
-// Greedy colouring of `points` (increasing) in that order: a colour never holds two points of
-// one tet. `colour` has one entry per point, kNoIndex on entry and again on return.
-std::vector<std::vector<index_t>> colour_points(const TetDomain& dom, const Incidence& inc,
-                                                const std::vector<index_t>& points,
-                                                std::vector<std::uint32_t>& colour) {
-    std::vector<index_t> seen;  // seen[c] == p: colour c is taken by a neighbour of p
-    std::vector<std::vector<index_t>> classes;
-    for (index_t p : points) {
-        for (index_t t : inc.of(p))
-            for (index_t i = 0; i < 4; ++i) {
-                const index_t q = dom.tets.vertex(t)[i];
-                if (q != p && colour[q] != kNoIndex) seen[colour[q]] = p;
-            }
-        std::uint32_t c = 0;
-        while (c < seen.size() && seen[c] == p) ++c;
-        if (c == seen.size()) {
-            seen.push_back(kNoIndex);
-            classes.emplace_back();
-        }
-        colour[p] = c;
-        classes[c].push_back(p);
-    }
-    for (index_t p : points) colour[p] = kNoIndex;
-    return classes;
-}
 
 // The volume-weighted mean of the star's circumcentres: the optimal-Delaunay (ODT) position of
 // p (Chen and Holst), which spreads points evenly where the centroid only averages them.

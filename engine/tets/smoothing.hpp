@@ -9,8 +9,9 @@
 // Front points [0, front_points) never move; the topology does not change.
 //
 // Parallel and deterministic: points are greedily coloured in index order so that no two
-// points of a colour share a tet; the points of one colour move at once (tbb::parallel_for),
-// each reading only its own tets, whose other points do not move in that colour.
+// points of a colour share a tet (point_colouring.hpp); the points of one colour move at once
+// (tbb::parallel_for), each reading only its own tets, whose other points do not move in that
+// colour.
 #include <array>
 #include <cstdint>
 #include <limits>

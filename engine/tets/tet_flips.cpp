@@ -4,6 +4,8 @@
 #include <limits>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 namespace tubemesh::tets {
 
 using delaunay::kFreeSlot;
@@ -228,25 +230,47 @@ void apply_flip_appending(TetDomain& dom, const FlipPlan& plan) {
     apply_flip(dom, plan, spare);
 }
 
-void compact_tets(TetDomain& dom) {
-    auto& store = dom.tets;
+void compact_tets(TetDomain& dom, std::vector<double>* per_slot) {
+    const delaunay::TetStore& store = dom.tets;
     const index_t n = store.size();
-    std::vector<index_t> renumber(n, kNoIndex);
-    index_t live = 0;
-    for (index_t t = 0; t < n; ++t)
-        if (store.vertex(t)[0] != kFreeSlot) renumber[t] = live++;
+    // Fixed chunks: each counts its live tets, the prefix sums say where its first one goes,
+    // and each writes its tets into a new store; any split gives the same arrays.
+    constexpr index_t kChunk = 16384;
+    const index_t chunks = (n + kChunk - 1) / kChunk;
+    const auto begin = [&](index_t c) { return std::min(n, c * kChunk); };
+    std::vector<index_t> first(std::size_t{chunks} + 1, 0);
+    tbb::parallel_for(index_t{0}, chunks, [&](index_t c) {
+        index_t live = 0;
+        for (index_t t = begin(c); t < begin(c + 1); ++t) live += store.vertex(t)[0] != kFreeSlot;
+        first[c + 1] = live;
+    });
+    for (index_t c = 0; c < chunks; ++c) first[c + 1] += first[c];
+    const index_t live = first[chunks];
     if (live == n) return;
-    // A live tet only moves down, onto a slot already read: one pass in place.
-    for (index_t t = 0; t < n; ++t) {
-        const index_t to = renumber[t];
-        if (to == kNoIndex) continue;
-        for (index_t f = 0; f < 4; ++f) {
-            const index_t code = store.neighbour(4 * t + f);
-            store.vertex(to)[f] = store.vertex(t)[f];
-            store.neighbour(4 * to + f) = code == kNoAdjacent ? kNoAdjacent : 4 * renumber[code >> 2] + (code & 3);
+    std::vector<index_t> renumber(n, kNoIndex);
+    tbb::parallel_for(index_t{0}, chunks, [&](index_t c) {
+        index_t to = first[c];
+        for (index_t t = begin(c); t < begin(c + 1); ++t)
+            if (store.vertex(t)[0] != kFreeSlot) renumber[t] = to++;
+    });
+    delaunay::TetStore out;
+    out.reserve(live);
+    out.set_size(live);
+    std::vector<double> slot_values(per_slot ? live : 0);
+    tbb::parallel_for(index_t{0}, chunks, [&](index_t c) {
+        for (index_t t = begin(c); t < begin(c + 1); ++t) {
+            const index_t to = renumber[t];
+            if (to == kNoIndex) continue;
+            for (index_t f = 0; f < 4; ++f) {
+                const index_t code = store.neighbour(4 * t + f);
+                out.vertex(to)[f] = store.vertex(t)[f];
+                out.neighbour(4 * to + f) = code == kNoAdjacent ? kNoAdjacent : 4 * renumber[code >> 2] + (code & 3);
+            }
+            if (per_slot) slot_values[to] = (*per_slot)[t];
         }
-    }
-    store.set_size(live);
+    });
+    dom.tets = std::move(out);
+    if (per_slot) per_slot->swap(slot_values);
 }
 
 }  // namespace tubemesh::tets

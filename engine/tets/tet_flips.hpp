@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <vector>
 
 #include "engine/core/types.hpp"
 #include "engine/tets/tet_domain.hpp"
@@ -83,6 +84,7 @@ int apply_flip(TetDomain& dom, const FlipPlan& plan, std::span<const index_t> sp
 void apply_flip_appending(TetDomain& dom, const FlipPlan& plan);
 
 // Removes free slots: live tets keep their relative order, neighbour codes are renumbered.
-void compact_tets(TetDomain& dom);
+// `per_slot` (optional, one value per slot): compacted alike. Parallel.
+void compact_tets(TetDomain& dom, std::vector<double>* per_slot = nullptr);
 
 }  // namespace tubemesh::tets

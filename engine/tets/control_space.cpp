@@ -56,26 +56,19 @@ ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& o
 
 ControlSpace::~ControlSpace() = default;
 
-double ControlSpace::size(const double* p) const {
-    // The minimum does not depend on the order of the neighbours: skip nearest()'s sort.
-    NearestBuffer buffer(neighbours_);
-    index_t* idx = buffer.index();
-    double* d2 = buffer.distance_squared();
-    const index_t found = index_->nearest_unordered({p[0], p[1], p[2]}, neighbours_, idx, d2);
-    double h = far_size_;
-    for (index_t i = 0; i < found; ++i) h = std::min(h, node_size_[idx[i]] + slope_ * std::sqrt(d2[i]));
-    return h;
-}
+double ControlSpace::size(const double* p) const { return std::min(far_size_, sample(p).uncapped); }
 
 ControlSpace::Sample ControlSpace::sample(const double* p) const {
+    // The minima do not depend on the order of the neighbours: skip nearest()'s sort.
     NearestBuffer buffer(neighbours_);
     index_t* idx = buffer.index();
     double* d2 = buffer.distance_squared();
     const index_t found = index_->nearest_unordered({p[0], p[1], p[2]}, neighbours_, idx, d2);
     Sample s{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     for (index_t i = 0; i < found; ++i) {
-        s.uncapped = std::min(s.uncapped, node_size_[idx[i]] + slope_ * std::sqrt(d2[i]));
-        s.nearest_front = std::min(s.nearest_front, std::sqrt(d2[i]));
+        const double d = std::sqrt(d2[i]);
+        s.uncapped = std::min(s.uncapped, node_size_[idx[i]] + slope_ * d);
+        s.nearest_front = std::min(s.nearest_front, d);
     }
     return s;
 }

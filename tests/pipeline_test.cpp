@@ -166,6 +166,32 @@ TEST(Pipeline, FullMeshIsTheSameOnARerun) {
     EXPECT_TRUE(check_mesh(a.mesh).ok()) << describe(check_mesh(a.mesh));
 }
 
+// The tet phase's report splits the optimisation time into its flips, smoothing and rescue,
+// so a slow tet step can be traced to its part without a profiler.
+TEST(Pipeline, TetPhaseReportsWhereTheOptimisationTimeWent) {
+    const Prepared p = prepare("straight-pipe");
+    const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {});
+    const PhaseReport* tets = nullptr;
+    for (const PhaseReport& ph : r.phases)
+        if (ph.name == "tets") tets = &ph;
+    ASSERT_NE(tets, nullptr);
+    const auto stat = [&](const std::string& key) {
+        for (const auto& [k, v] : tets->statistics)
+            if (k == key) return v;
+        ADD_FAILURE() << "no statistic '" << key << "'";
+        return -1.0;
+    };
+    const double total = stat("optimisation s");
+    const double parts = stat("optimisation flips s") + stat("optimisation smoothing s") + stat("optimisation rescue s");
+    EXPECT_GT(stat("optimisation flips s"), 0.0);
+    EXPECT_GT(stat("optimisation smoothing s"), 0.0);
+    EXPECT_GE(stat("optimisation rescue s"), 0.0);
+    EXPECT_LE(parts, total);  // the rest: compaction and the measures between passes
+    EXPECT_GE(stat("optimisation passes"), 1.0);
+    EXPECT_EQ(stat("optimisation passes"), double(r.tet_stats.optimise.passes));
+    EXPECT_LE(stat("recovery s") + stat("refinement s") + total, tets->seconds);
+}
+
 TEST(Pipeline, NegativeThreadCountIsAnError) {
     const Prepared p = prepare("straight-pipe");
     MeshOptions o;

@@ -163,6 +163,10 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
     r.statistics = {{"recovery s", s.recovery.seconds_total},
                     {"refinement s", s.refine.seconds},
                     {"optimisation s", s.optimise.seconds_total},
+                    {"optimisation flips s", s.optimise.seconds_flips},
+                    {"optimisation smoothing s", s.optimise.seconds_smoothing},
+                    {"optimisation rescue s", s.optimise.seconds_rescue},
+                    {"optimisation passes", double(s.optimise.passes)},
                     {"min collapse before optimisation", s.optimise.min_collapse_before},
                     {"mean collapse before optimisation", s.optimise.mean_collapse_before}};
     progress.finish();

@@ -48,6 +48,26 @@ void refuse_contradictory_sizes(const SizePlan& plan, const SizingOptions& given
                                 source_text(plan.size_source)));
 }
 
+// What the element bound is computed from: the solid's rough volume and non-wall area, and
+// each tube's length, radius and nodes around at the plan's St.
+struct BoundInputs {
+    RoughMeasures measures;
+    std::vector<TubeExtent> extents;
+};
+
+BoundInputs bound_inputs(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
+                         const PrepareOptions& options) {
+    std::vector<int> walls;
+    BoundInputs in;
+    for (const TubeInfo& t : tubes.tubes) {
+        walls.insert(walls.end(), t.faces.begin(), t.faces.end());
+        in.extents.push_back(
+            {t.length, t.radius_max, tube_ring_nodes(t, plan.sweep_size, options.discretize.ring_nodes)});
+    }
+    in.measures = rough_measures(model, walls);
+    return in;
+}
+
 // The element budget (element_budget.hpp) on the planned sizes, before discretize allocates
 // stations and edge points for them.
 ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
@@ -55,18 +75,13 @@ ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes
     if (options.budget.max_elements < 0)
         throw Error(fmt::format("the element limit must be positive (0: this machine's memory), got {}",
                                 options.budget.max_elements));
-    std::vector<int> walls;
-    std::vector<TubeExtent> extents;
-    for (const TubeInfo& t : tubes.tubes) {
-        walls.insert(walls.end(), t.faces.begin(), t.faces.end());
-        extents.push_back({t.length, t.radius_max, tube_ring_nodes(t, plan.sweep_size, options.discretize.ring_nodes)});
-    }
-    const RoughMeasures m = rough_measures(model, walls);
+    const BoundInputs in = bound_inputs(model, tubes, plan, options);
     const BoundingBox b = non_wall_box(model, tubes.tubes);
     const BudgetContext context{plan.size_source, plan.sweep_source,
                                 fmt::format("{:.6g} x {:.6g} x {:.6g} {}", b.max.x - b.min.x, b.max.y - b.min.y,
                                             b.max.z - b.min.z, model.report().length_unit)};
-    return check_element_budget(m.volume, m.area, extents, plan.size, plan.sweep_size, options.budget, context);
+    return check_element_budget(in.measures.volume, in.measures.area, in.extents, plan.size, plan.sweep_size,
+                                options.budget, context);
 }
 
 std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan) {
@@ -79,6 +94,13 @@ std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& 
 }
 
 }  // namespace
+
+ElementEstimate estimate_run_elements(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
+                                      const PrepareOptions& options) {
+    const BoundInputs in = bound_inputs(model, tubes, plan, options);
+    return estimate_elements(in.measures.volume, in.measures.area, in.extents, plan.size, plan.sweep_size,
+                             options.budget);
+}
 
 PrepareOptions prepare_options(const MeshOptions& options) {
     PrepareOptions p;

@@ -55,6 +55,11 @@ public:
     std::vector<std::string> report_lines() const;
 };
 
+// The lower bound on the elements a run at the plan's sizes makes (element_budget.hpp), the
+// figure prepare_model checks against options.budget, without the check: `inspect` shows it.
+ElementEstimate estimate_run_elements(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
+                                      const PrepareOptions& options = {});
+
 // Throws tubemesh::Error for bad user sizes, sizes that give more elements than
 // options.budget allows (before any phase allocates for them), or geometry that cannot be
 // discretised.

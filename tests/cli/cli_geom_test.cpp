@@ -105,6 +105,34 @@ TEST_F(CliGeomPaperEx1, InspectJsonHasOneTubeOfDiameter004) {
     EXPECT_EQ(j["length_unit"], "metre");
 }
 
+// The element bound `tubemesh mesh` refuses sizes on, shown before meshing: its parts add up,
+// the rings count (one tube), and a size far too small is flagged as one mesh refuses.
+TEST_F(CliGeomPaperEx1, InspectShowsTheElementBoundMeshChecks) {
+    ASSERT_EQ(made_->exit_code, 0) << made_->err;
+    const ProcessResult r = tubemesh_cmd("inspect --json " + q(step()));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const nlohmann::json b = nlohmann::json::parse(r.out).at("elements_at_least");
+    const double parts = b.at("tets").get<double>() + b.at("triangles").get<double>() +
+                         b.at("hexes").get<double>() + b.at("pyramids").get<double>();
+    EXPECT_NEAR(b.at("total").get<double>(), parts, 1e-9 * parts) << b.dump();
+    EXPECT_GT(b.at("hexes").get<double>(), 0) << b.dump();
+    EXPECT_GT(b.at("tets").get<double>(), 0) << b.dump();
+    EXPECT_GT(b.at("limit").get<double>(), b.at("total").get<double>()) << b.dump();
+    EXPECT_FALSE(b.at("refused").get<bool>()) << b.dump();
+
+    // S = 0.002 in a 15 x 25 x 4 block: ~1e12 tets. inspect still exits 0 and says so.
+    const ProcessResult tiny = tubemesh_cmd("inspect --size 0.002 " + q(step()));
+    EXPECT_EQ(tiny.exit_code, 0) << tiny.out << tiny.err;
+    EXPECT_NE(tiny.out.find("`tubemesh mesh` refuses these sizes"), std::string::npos) << tiny.out;
+    const ProcessResult tiny_json = tubemesh_cmd("inspect --json --size 0.002 " + q(step()));
+    ASSERT_EQ(tiny_json.exit_code, 0) << tiny_json.err;
+    EXPECT_TRUE(nlohmann::json::parse(tiny_json.out).at("elements_at_least").at("refused").get<bool>());
+    TempDir out;
+    const ProcessResult mesh = tubemesh_cmd("mesh --quiet --size 0.002 " + q(step()) + " -o " + q(out / "x.msh"));
+    EXPECT_EQ(mesh.exit_code, 2) << mesh.out << mesh.err;
+    EXPECT_FALSE(fs::exists(out / "x.msh"));
+}
+
 // ---- make-block errors: one line on stderr, exit 2, nothing written ----
 
 void expect_make_block_error(const std::string& args, const std::string& what) {

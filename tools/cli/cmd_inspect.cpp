@@ -1,7 +1,8 @@
 // `tubemesh inspect FILE [--json] [--size S] [--sweep-size ST] [--solid N]`: what tubemesh sees
 // in a CAD file before meshing it. The faces and their roles, the tubes found (radius, length,
 // bend, hosts), the candidates that were not tubes and why, and the S / St plan with every
-// change the sizing rules made. Exit 0, or 2 when the file cannot be imported.
+// change the sizing rules made, and the lower bound on the element count at those sizes (the
+// one `tubemesh mesh` refuses sizes on). Exit 0, or 2 when the file cannot be imported.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -10,7 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "geom/element_budget.hpp"
 #include "geom/import.hpp"
+#include "geom/prepare.hpp"
 #include "geom/sizing.hpp"
 #include "geom/surface_map_occt.hpp"
 #include "geom/tubes.hpp"
@@ -82,8 +85,21 @@ nlohmann::json plan_json(const geom::SizePlan& p) {
             {"changes", changes}, {"warnings", p.warnings}};
 }
 
+// The element bound at the planned sizes and the limit `tubemesh mesh` checks it against.
+struct Bound {
+    geom::ElementEstimate estimate;
+    double limit = 0;
+};
+
+nlohmann::json bound_json(const Bound& b) {
+    return {{"tets", b.estimate.tets},         {"triangles", b.estimate.triangles},
+            {"hexes", b.estimate.hexes},       {"pyramids", b.estimate.pyramids},
+            {"total", b.estimate.total()},     {"limit", b.limit},
+            {"refused", b.estimate.total() > b.limit}};
+}
+
 nlohmann::json inspect_json(const geom::Model& model, const std::vector<int>& loops_per_face,
-                            const geom::TubeSearch& found, const geom::SizePlan& plan) {
+                            const geom::TubeSearch& found, const geom::SizePlan& plan, const Bound& bound) {
     const auto roles = face_roles(found);
     nlohmann::json faces = nlohmann::json::array();
     for (int f = 1; f <= model.face_count(); ++f) {
@@ -98,11 +114,12 @@ nlohmann::json inspect_json(const geom::Model& model, const std::vector<int>& lo
     const geom::ImportReport& report = model.report();
     return {{"file", report.source}, {"format", report.format},     {"length_unit", report.length_unit},
             {"faces", faces},        {"edges", model.edge_count()}, {"volume", model.volume()},
-            {"tubes", tubes},        {"not_tubes", rejected},       {"sizes", plan_json(plan)}};
+            {"tubes", tubes},        {"not_tubes", rejected},       {"sizes", plan_json(plan)},
+            {"elements_at_least", bound_json(bound)}};
 }
 
 void print_text(const geom::Model& model, const std::vector<int>& loops_per_face, const geom::TubeSearch& found,
-                const geom::SizePlan& plan) {
+                const geom::SizePlan& plan, const Bound& bound) {
     const geom::ImportReport& report = model.report();
     const geom::BoundingBox b = model.bounds();
     fmt::print("{} ({}, {}): {} faces, {} edges, volume {:.6g}\n", report.source, report.format, report.length_unit,
@@ -144,6 +161,12 @@ void print_text(const geom::Model& model, const std::vector<int>& loops_per_face
         fmt::print("  {}: St {:.6g} -> {:.6g}, S {:.6g} -> {:.6g}: {}\n", c.rule, c.old_sweep_size, c.new_sweep_size,
                    c.old_size, c.new_size, c.reason);
     for (const std::string& w : plan.warnings) fmt::print("  warning: {}\n", w);
+
+    const geom::ElementEstimate& e = bound.estimate;
+    fmt::print("\nelements at these sizes: at least {:.3g} (tets {:.3g}, surface triangles {:.3g}, hexes {:.3g}, "
+               "pyramids {:.3g}); limit {:.3g}{}\n",
+               e.total(), e.tets, e.triangles, e.hexes, e.pyramids, bound.limit,
+               e.total() > bound.limit ? ": `tubemesh mesh` refuses these sizes" : "");
 }
 
 }  // namespace
@@ -172,10 +195,14 @@ Command add_inspect_command(CLI::App& app) {
                 std::vector<int> loops;
                 for (const auto& map : geom::make_surface_maps(model))
                     loops.push_back(static_cast<int>(map->trimming_loops(0).size()));
+                // The same bound and limit `tubemesh mesh` checks (default options).
+                const geom::PrepareOptions prepare;
+                const Bound bound{geom::estimate_run_elements(model, found, plan, prepare),
+                                  geom::element_limit(prepare.budget)};
                 if (args->json)
-                    fmt::print("{}\n", inspect_json(model, loops, found, plan).dump(2));
+                    fmt::print("{}\n", inspect_json(model, loops, found, plan, bound).dump(2));
                 else
-                    print_text(model, loops, found, plan);
+                    print_text(model, loops, found, plan, bound);
                 return 0;
             }};
 }

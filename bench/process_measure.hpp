@@ -29,9 +29,10 @@ struct ProgramRun {
     std::string output;  // stdout and stderr, interleaved
 };
 
-// Runs argv (argv[0] looked up in PATH, no shell) under `timeout limit_seconds`, stdin from
-// /dev/null, stdout and stderr into `log`. The peak resident set is the largest of the
-// program's processes (wait4 reports the waited child together with its own children).
+// Runs argv (argv[0] looked up in PATH, no shell) under `timeout limit_seconds` and GNU time,
+// stdin from /dev/null, stdout and stderr into `log`. The peak resident set is the program's
+// own (GNU time's %M; 0 when the limit stopped it); the CPU time is the program's and its
+// children's (wait4).
 ProgramRun run_program(const std::vector<std::string>& argv, const std::filesystem::path& log,
                        double limit_seconds);
 

@@ -12,7 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
   python3 python3-gmsh python3-meshio python3-numpy
   # benchmark peers
-  gmsh tetgen valgrind
+  gmsh tetgen valgrind time
 )
 
 missing=()

@@ -74,7 +74,7 @@ ElementEstimate check_element_budget(double volume, double area, const std::vect
                           double sweep_size, const ElementBudget& budget, const BudgetContext& context) {
     const double limit = element_limit(budget);
     const ElementEstimate e = estimate_elements(volume, area, tubes, size, sweep_size, budget);
-    if (e.total() <= limit) return e;
+    if (!exceeds_limit(e, limit)) return e;
 
     const std::string limit_text =
         budget.max_elements > 0

@@ -58,6 +58,9 @@ double physical_memory_bytes();
 // What the check compares the estimate with: budget.max_elements, or the memory's worth.
 double element_limit(const ElementBudget& budget);
 
+// The refusal rule itself, so that `inspect`'s "refuses these sizes" is the check's answer.
+inline bool exceeds_limit(const ElementEstimate& e, double limit) { return e.total() > limit; }
+
 // What the user gave, for the message: where S and St came from and the model's extent.
 struct BudgetContext {
     std::string size_source;   // "user" or the default's formula (SizePlan::size_source)

@@ -89,13 +89,14 @@ nlohmann::json plan_json(const geom::SizePlan& p) {
 struct Bound {
     geom::ElementEstimate estimate;
     double limit = 0;
+    bool refused() const { return geom::exceeds_limit(estimate, limit); }
 };
 
 nlohmann::json bound_json(const Bound& b) {
     return {{"tets", b.estimate.tets},         {"triangles", b.estimate.triangles},
             {"hexes", b.estimate.hexes},       {"pyramids", b.estimate.pyramids},
             {"total", b.estimate.total()},     {"limit", b.limit},
-            {"refused", b.estimate.total() > b.limit}};
+            {"refused", b.refused()}};
 }
 
 nlohmann::json inspect_json(const geom::Model& model, const std::vector<int>& loops_per_face,
@@ -166,7 +167,7 @@ void print_text(const geom::Model& model, const std::vector<int>& loops_per_face
     fmt::print("\nelements at these sizes: at least {:.3g} (tets {:.3g}, surface triangles {:.3g}, hexes {:.3g}, "
                "pyramids {:.3g}); limit {:.3g}{}\n",
                e.total(), e.tets, e.triangles, e.hexes, e.pyramids, bound.limit,
-               e.total() > bound.limit ? ": `tubemesh mesh` refuses these sizes" : "");
+               bound.refused() ? ": `tubemesh mesh` refuses these sizes" : "");
 }
 
 }  // namespace

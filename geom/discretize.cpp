@@ -6,6 +6,7 @@
 #include <set>
 
 #include "engine/core/types.hpp"
+#include "engine/sweep/sweep.hpp"
 #include "geom/discretize_edges.hpp"
 #include "geom/tubes_axis.hpp"
 #include "geom/tubes_topology.hpp"
@@ -65,13 +66,8 @@ TubeData discretize_tube(const TopologyIndex& index, const TubeInfo& info, doubl
 
 }  // namespace
 
-int ring_node_count(double radius, double sweep_size) {
-    const double around = 2 * std::numbers::pi * (radius + sweep_size / 2) / sweep_size;
-    return std::max(4, 4 * static_cast<int>(std::lround(around / 4)));
-}
-
 int tube_ring_nodes(const TubeInfo& tube, double sweep_size, int ring_nodes) {
-    return ring_nodes > 0 ? ring_nodes : ring_node_count((tube.radius_min + tube.radius_max) / 2, sweep_size);
+    return ring_nodes > 0 ? ring_nodes : circumferential_count((tube.radius_min + tube.radius_max) / 2, sweep_size);
 }
 
 DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tubes, const SizePlan& plan,

@@ -16,17 +16,11 @@
 namespace tubemesh::geom {
 
 struct DiscretizeOptions {
-    // Nodes around every tube; 0 picks ring_node_count() per tube.
+    // Nodes around every tube; 0 picks circumferential_count() (engine/sweep/sweep.hpp) per tube.
     int ring_nodes = 0;
 };
 
-// Nodes around a tube of radius r in a ring of thickness St: the multiple of 4 (at least 4)
-// nearest to the ring's mid-circumference 2 pi (r + St/2) over St, so the ring's quads come
-// out about square. A multiple of 4 keeps opposite nodes opposite. For the paper's Example 1
-// (r = 0.02 with St about 0.14) it gives the paper's 4.
-int ring_node_count(double radius, double sweep_size);
-
-// n for one tube: `ring_nodes` when given (> 0), else ring_node_count at its mean radius.
+// n for one tube: `ring_nodes` when given (> 0), else circumferential_count at its mean radius.
 int tube_ring_nodes(const TubeInfo& tube, double sweep_size, int ring_nodes);
 
 // Stations along the centre line: St apart by arc length, at least two (one layer).

@@ -28,7 +28,7 @@ namespace tubemesh::geom {
 struct PrepareOptions {
     SizingOptions sizing;  // S and St; 0 picks geom's defaults (sizing.hpp)
     TubeOptions tubes;
-    DiscretizeOptions discretize;  // ring_nodes = n; 0 picks ring_node_count per tube
+    DiscretizeOptions discretize;  // ring_nodes = n; 0 picks circumferential_count per tube
     ElementBudget budget;          // checked right after the sizes are planned
     ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
 };

@@ -302,10 +302,16 @@ TEST(GeomDiscretize, CurvatureCutIsCappedAt1024SegmentsPerEdge) {
     EXPECT_EQ(ellipses, 2);
 }
 
-TEST(GeomDiscretize, RingNodeCountMakesSquareQuads) {
-    EXPECT_EQ(geom::ring_node_count(0.02, 0.14), 4);  // the paper's Example 1
-    EXPECT_EQ(geom::ring_node_count(0.02, 0.04), 8);  // the default St = diameter
-    EXPECT_EQ(geom::ring_node_count(1.0, 0.1), 64);
+// geom asks the sweep's one rule for n (engine/sweep/sweep.hpp): a thick ring, the paper's
+// Example 1 (r = 0.02, St 0.14), gets 8 unless the user asks for the paper's 4.
+TEST(GeomDiscretize, TubeRingNodesFollowTheSweepRuleOrTheUser) {
+    geom::TubeInfo tube;
+    tube.radius_min = 0.0199;
+    tube.radius_max = 0.0201;
+    EXPECT_EQ(geom::tube_ring_nodes(tube, 0.04, 0), 8);
+    EXPECT_EQ(geom::tube_ring_nodes(tube, 0.14, 0), 8);
+    EXPECT_EQ(geom::tube_ring_nodes(tube, 0.14, 4), 4);
+    EXPECT_EQ(geom::tube_ring_nodes(tube, 0.005, 0), 28);
 }
 
 }  // namespace

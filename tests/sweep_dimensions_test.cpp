@@ -18,6 +18,8 @@ TEST(SweepDimensions, CircumferentialCountIsEightForSmallPipes) {
     EXPECT_EQ(circumferential_count(1.0, 0.92), 8);
     EXPECT_EQ(circumferential_count(1.0, 0.5), 16);
     EXPECT_EQ(circumferential_count(1.0, 0.25), 28);
+    EXPECT_EQ(circumferential_count(1.0, 0.1), 64);
+    EXPECT_EQ(circumferential_count(0.02, 1.0), 8);    // never fewer than 8
     EXPECT_EQ(circumferential_count(1.0, 0.1) % 4, 0);
     EXPECT_THROW(circumferential_count(0, 1), Error);
     EXPECT_THROW(circumferential_count(1, -1), Error);

@@ -81,7 +81,8 @@ struct MeshOptions {
     // the rules would have to cut it, or it is not below S, preparing the model throws.
     double sweep_size = 0;
     // n, nodes around every tube. 0 (default): the multiple of 4 nearest to the ring's
-    // mid-circumference over St, at least 4 (geom::ring_node_count; 8 for St = diameter).
+    // mid-circumference over St, at least 8 (circumferential_count in engine/sweep/sweep.hpp,
+    // which says why; the paper's 4 only when given).
     int circumferential = 0;
 
     // Hex ring options (engine/sweep/sweep.hpp documents each default: L = 2 layers graded

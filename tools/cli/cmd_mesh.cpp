@@ -156,7 +156,7 @@ Command add_mesh_command(CLI::App& app) {
         "Hex ring thickness St (default: smallest tube diameter, cut by the paper's rules; a given St the rules "
         "would cut is an error)");
     cmd->add_option("--circ", args->circumferential,
-                    "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 4)")
+                    "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 8)")
         ->check(CLI::Range(3, 4096));
     cmd->add_option("--layers", args->layers, "Hex layers across the ring, L (default 2, graded 1.5 towards the wall)")
         ->check(CLI::Range(1, 64));

@@ -1,0 +1,136 @@
+#!/usr/bin/python3
+"""How high issue 8's tet-collapse mean can go on the paper's examples: each example next to
+the same solid without its holes, meshed by tubemesh and by Gmsh, all scored with our
+collapse measure (`tubemesh check`). A hole-free solid's mean is a ceiling for the example:
+the rings, pyramids and the grading towards them only add worse tets.
+
+  bench/quality_ceilings.py [--build-dir build/release] [--out table.md]
+
+Runs in a few minutes on 2 cores (tubemesh on 1 thread, rows one after another). Needs
+Debian's /usr/bin/python3 with python3-gmsh (tools/setup.sh installs it). Gmsh meshes the
+hole-free solids with its Delaunay and its default optimiser (this Gmsh has no Netgen
+optimiser), at the size that gives about as many tets as ours.
+
+The hole-free solids are written by Gmsh's OpenCASCADE kernel, whose STEP files say
+millimetre: the boxes are built 1000 times larger and meshed at 1000 S, which leaves every
+shape measure unchanged.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+import gmsh
+
+# (row label, solid, tubemesh mesh options). Solids: presets by name, or "box:X,Y,Z" /
+# "cylinder:D,L" (hole-free, millimetre). Sizes: issue 9's (0.6, 1.1, 40), and what moves them.
+ROWS = [
+    ("paper-ex1, S 0.6 (defaults)", "paper-ex1", ["--size", "0.6"]),
+    ("paper-ex1, S 0.6, paper's ring: n 4, St 0.2, axial 2.5", "paper-ex1",
+     ["--size", "0.6", "--circ", "4", "--sweep-size", "0.2", "--axial-aspect", "2.5"]),
+    ("15 x 25 x 4 box without the pipe, S 0.6", "box:15000,25000,4000", ["--size", "600"]),
+    ("paper-ex2, S 1.1 (defaults)", "paper-ex2", ["--size", "1.1"]),
+    ("11 x 12 x 11 box without the holes, S 1.1", "box:11000,12000,11000", ["--size", "1100"]),
+    ("paper-ex3, S 40 (defaults)", "paper-ex3", ["--size", "40"]),
+    ("paper-ex3, S 40, gradation 1.2", "paper-ex3", ["--size", "40", "--gradation", "1.2"]),
+    ("paper-ex3, S 20", "paper-ex3", ["--size", "20"]),
+    ("journal cylinder 295 x 300 without the oil hole, S 40", "cylinder:295,300", ["--size", "40"]),
+    ("journal cylinder 295 x 300 without the oil hole, S 20", "cylinder:295,300", ["--size", "20"]),
+]
+# Gmsh on the hole-free solids: (row label, solid, Gmsh size).
+GMSH_ROWS = [
+    ("Gmsh: 15 x 25 x 4 box", "box:15000,25000,4000", 500.0),
+    ("Gmsh: 11 x 12 x 11 box", "box:11000,12000,11000", 900.0),
+    ("Gmsh: journal cylinder", "cylinder:295,300", 25.0),
+]
+
+
+def solid_step(tubemesh, solid, folder):
+    path = os.path.join(folder, solid.replace(":", "_").replace(",", "_") + ".step")
+    if os.path.exists(path):
+        return path
+    if solid.startswith(("box:", "cylinder:")):
+        kind, dims = solid.split(":")
+        d = [float(v) for v in dims.split(",")]
+        gmsh.clear()
+        if kind == "box":
+            gmsh.model.occ.addBox(0, 0, 0, *d)
+        else:
+            gmsh.model.occ.addCylinder(0, 0, 0, 0, 0, d[1], d[0] / 2)
+        gmsh.model.occ.synchronize()
+        gmsh.write(path)
+    else:
+        subprocess.run([tubemesh, "make-block", "--preset", solid, "-o", path], check=True,
+                       stdout=subprocess.DEVNULL)
+    return path
+
+
+def summary(quality):
+    def part(key, fmt):
+        q = quality[key]
+        return fmt % (q["min"], q["mean"]) if q["count"] else ""
+    t = quality["tet_collapse"]
+    counts = sum(quality[k]["count"] for k in ("tet_collapse", "pyramid_scaled_jacobian",
+                                               "hex_scaled_jacobian"))
+    return [str(counts), str(t["count"]), "%.3f" % t["min"], "%.3f" % t["mean"],
+            part("pyramid_scaled_jacobian", "%.3f / %.3f"), part("hex_scaled_jacobian", "%.3f / %.3f")]
+
+
+def ours(tubemesh, step, options, folder):
+    report = os.path.join(folder, "report.json")
+    subprocess.run([tubemesh, "mesh", step, *options, "--threads", "1", "--quiet", "--report", report,
+                    "-o", os.path.join(folder, "ours.vtu")], check=True)
+    with open(report) as f:
+        return summary(json.load(f)["quality"])
+
+
+def gmsh_tets(tubemesh, step, size, folder):
+    out = os.path.join(folder, "gmsh.msh")
+    gmsh.clear()
+    gmsh.model.occ.importShapes(step)
+    gmsh.model.occ.synchronize()
+    gmsh.option.setNumber("Mesh.MeshSizeMin", size)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+    gmsh.option.setNumber("Mesh.Algorithm3D", 1)  # Delaunay
+    gmsh.option.setNumber("Mesh.Optimize", 1)
+    gmsh.model.mesh.generate(3)
+    gmsh.model.addPhysicalGroup(3, [e[1] for e in gmsh.model.getEntities(3)])
+    gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
+    gmsh.write(out)
+    checked = subprocess.run([tubemesh, "check", "--json", out], check=True, capture_output=True, text=True)
+    return summary(json.loads(checked.stdout)["quality"])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--build-dir", default="build/release")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    tubemesh = os.path.abspath(os.path.join(args.build_dir, "tools", "tubemesh"))
+    header = ["case", "elements", "tets", "tet min", "tet mean", "pyramid min / mean", "hex J_m min / mean"]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    try:
+        with tempfile.TemporaryDirectory() as folder:
+            for label, solid, options in ROWS:
+                cells = ours(tubemesh, solid_step(tubemesh, solid, folder), options, folder)
+                lines.append("| " + " | ".join([label] + cells) + " |")
+                print(lines[-1], file=sys.stderr)
+            for label, solid, size in GMSH_ROWS:
+                cells = gmsh_tets(tubemesh, solid_step(tubemesh, solid, folder), size, folder)
+                lines.append("| " + " | ".join(["%s, size %g" % (label, size)] + cells) + " |")
+                print(lines[-1], file=sys.stderr)
+    finally:
+        gmsh.finalize()
+    table = "\n".join(lines) + "\n"
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(table)
+    sys.stdout.write(table)
+
+
+if __name__ == "__main__":
+    main()

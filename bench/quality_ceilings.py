@@ -30,11 +30,14 @@ ROWS = [
     ("paper-ex1, S 0.6 (defaults)", "paper-ex1", ["--size", "0.6"]),
     ("paper-ex1, S 0.6, paper's ring: n 4, St 0.2, axial 2.5", "paper-ex1",
      ["--size", "0.6", "--circ", "4", "--sweep-size", "0.2", "--axial-aspect", "2.5"]),
+    ("paper-ex1, S 0.6, gradation 1.2 (elements spent on grading)", "paper-ex1", ["--size", "0.6", "--gradation", "1.2"]),
     ("15 x 25 x 4 box without the pipe, S 0.6", "box:15000,25000,4000", ["--size", "600"]),
     ("paper-ex2, S 1.1 (defaults)", "paper-ex2", ["--size", "1.1"]),
+    ("paper-ex2, S 1.1, gradation 1.2", "paper-ex2", ["--size", "1.1", "--gradation", "1.2"]),
     ("11 x 12 x 11 box without the holes, S 1.1", "box:11000,12000,11000", ["--size", "1100"]),
     ("paper-ex3, S 40 (defaults)", "paper-ex3", ["--size", "40"]),
     ("paper-ex3, S 40, gradation 1.2", "paper-ex3", ["--size", "40", "--gradation", "1.2"]),
+    ("paper-ex3, S 40, gradation 1.1", "paper-ex3", ["--size", "40", "--gradation", "1.1"]),
     ("paper-ex3, S 20", "paper-ex3", ["--size", "20"]),
     ("journal cylinder 295 x 300 without the oil hole, S 40", "cylinder:295,300", ["--size", "40"]),
     ("journal cylinder 295 x 300 without the oil hole, S 20", "cylinder:295,300", ["--size", "20"]),
@@ -45,6 +48,19 @@ GMSH_ROWS = [
     ("Gmsh: 11 x 12 x 11 box", "box:11000,12000,11000", 900.0),
     ("Gmsh: journal cylinder", "cylinder:295,300", 25.0),
 ]
+
+
+def write_quietly(path):
+    """gmsh.write, without the banner OpenCASCADE's STEP writer prints on file descriptor 1."""
+    sys.stdout.flush()
+    saved = os.dup(1)
+    with open(os.devnull, "w") as null:
+        os.dup2(null.fileno(), 1)
+        try:
+            gmsh.write(path)
+        finally:
+            os.dup2(saved, 1)
+            os.close(saved)
 
 
 def solid_step(tubemesh, solid, folder):
@@ -60,7 +76,7 @@ def solid_step(tubemesh, solid, folder):
         else:
             gmsh.model.occ.addCylinder(0, 0, 0, 0, 0, d[1], d[0] / 2)
         gmsh.model.occ.synchronize()
-        gmsh.write(path)
+        write_quietly(path)
     else:
         subprocess.run([tubemesh, "make-block", "--preset", solid, "-o", path], check=True,
                        stdout=subprocess.DEVNULL)

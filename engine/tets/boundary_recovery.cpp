@@ -226,6 +226,9 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
                   RecoveryStats* stats_out) {
     const auto t_start = Clock::now();
     RecoveryStats st;
+    if (options.max_ring < 3 || options.max_ring > kMaxRecoveryRing)
+        throw Error("boundary recovery: max_ring must lie in 3.." + std::to_string(kMaxRecoveryRing) + ", got " +
+                    std::to_string(options.max_ring));
     if (xyz.size() % 3 != 0) throw Error("tet front: the coordinate array's length is not a multiple of 3");
     const index_t n = static_cast<index_t>(xyz.size() / 3);
     const FrontElements elements = check_front(front, n);

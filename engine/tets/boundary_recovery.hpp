@@ -31,7 +31,8 @@ struct RecoveryOptions {
     unsigned partitions = 0;
     // Box around the points, grown by this fraction of their bounding box diagonal per side.
     double box_margin = 0.1;
-    // Largest ring (tets around an edge) an edge-removal flip tries (O(n^3) per try).
+    // Largest ring (tets around an edge) an edge-removal flip tries (O(n^3) per try), 3 to
+    // kMaxRecoveryRing (recovery_flips.hpp).
     int max_ring = 16;
     // Steiner points one missing edge or triangle may need before recovery gives up (an error).
     int max_steiner_per_element = 64;

@@ -7,6 +7,7 @@
 #include "engine/mesh/topology.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
+#include "engine/tets/ring_triangulation.hpp"
 
 namespace tubemesh::tets {
 
@@ -60,7 +61,7 @@ bool remove_edge(RecoveryMesh& m, index_t u, index_t v, const Target* target, co
     std::vector<index_t> tets, ring;
     if (!m.edge_ring(u, v, tets, ring)) return false;
     const int n = static_cast<int>(ring.size());
-    if (n < 3 || n > max_ring) return false;
+    if (n < 3 || n > std::min(max_ring, kMaxRecoveryRing)) return false;
     for (int i = 0; i < n; ++i)
         if (locks.face(u, v, ring[i])) return false;
 
@@ -76,43 +77,25 @@ bool remove_edge(RecoveryMesh& m, index_t u, index_t v, const Target* target, co
                 chord_ok[i * n + j] = !bad;
             }
     }
-    // Klincsek's dynamic programme over the ring polygon: best[i][j] is the best smallest tet
-    // measure of the sub-polygon i..j; triangle (i, k, j) makes tets (ri, rk, rj, v) and
-    // (ri, rj, rk, u).
-    constexpr double kInvalid = -std::numeric_limits<double>::infinity();
-    std::vector<double> best(static_cast<std::size_t>(n * n), kInvalid);
-    std::vector<int> split(static_cast<std::size_t>(n * n), -1);
-    for (int i = 0; i + 1 < n; ++i) best[i * n + i + 1] = std::numeric_limits<double>::infinity();
-    for (int len = 2; len < n; ++len)
-        for (int i = 0; i + len < n; ++i) {
-            const int j = i + len;
-            if (!chord_ok[i * n + j]) continue;
-            for (int k = i + 1; k < j; ++k) {
-                const double sub = std::min(best[i * n + k], best[k * n + j]);
-                if (sub <= best[i * n + j]) continue;
-                const Tet t1{ring[i], ring[k], ring[j], v}, t2{ring[i], ring[j], ring[k], u};
-                if (!positive(m, t1) || !positive(m, t2)) continue;
-                if (target && face_crossed(m, *target, ring[i], ring[k], ring[j])) continue;
-                const double q = std::min({sub, collapse(m, t1), collapse(m, t2)});
-                if (q > best[i * n + j]) {
-                    best[i * n + j] = q;
-                    split[i * n + j] = k;
-                }
-            }
-        }
-    if (best[n - 1] == kInvalid) return false;
+    // Triangle (i, k, j) of the ring makes the tets (ri, rk, rj, v) and (ri, rj, rk, u); it is
+    // out when either is not positive or the triangle crosses the target.
+    const auto score = [&](int i, int k, int j, double) {
+        const Tet t1{ring[i], ring[k], ring[j], v}, t2{ring[i], ring[j], ring[k], u};
+        constexpr double kOut = -std::numeric_limits<double>::infinity();
+        if (!positive(m, t1) || !positive(m, t2)) return RingTriangle{kOut, kOut, kOut};
+        if (target && face_crossed(m, *target, ring[i], ring[k], ring[j])) return RingTriangle{kOut, kOut, kOut};
+        const double first = collapse(m, t1), second = collapse(m, t2);
+        return RingTriangle{std::min(first, second), first, second};
+    };
+    RingTriangulation<kMaxRecoveryRing> search;
+    if (!search.solve(n, -std::numeric_limits<double>::infinity(), score,
+                      [&](int i, int j) { return chord_ok[i * n + j] != 0; }))
+        return false;
     std::vector<Tet> out;
-    std::vector<std::pair<int, int>> stack = {{0, n - 1}};
-    while (!stack.empty()) {
-        const auto [i, j] = stack.back();
-        stack.pop_back();
-        if (j - i < 2) continue;
-        const int k = split[i * n + j];
+    search.for_each_triangle([&](int i, int k, int j, double, double) {
         out.push_back({ring[i], ring[k], ring[j], v});
         out.push_back({ring[i], ring[j], ring[k], u});
-        stack.emplace_back(i, k);
-        stack.emplace_back(k, j);
-    }
+    });
     if (!m.replace(tets, out)) return false;
     ++c.edge_removals;
     c.flips32 += n == 3;

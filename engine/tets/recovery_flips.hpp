@@ -46,9 +46,13 @@ struct FlipCounters {
 // 2-3 flip of the face opposite local vertex f of tet t. `target` may be null.
 bool flip23(RecoveryMesh& m, index_t t, int f, const Target* target, const FrontLocks& locks, FlipCounters& c);
 
+// Largest ring an edge removal can search (the size of its tables).
+constexpr int kMaxRecoveryRing = 16;
+
 // Removes edge uv: the ring of its n tets is replaced by 2n-4 tets, from the triangulation of
 // the ring polygon that maximises the smallest new tet's collapse measure among those that
-// are valid. Rings larger than max_ring are not tried.
+// are valid (ring_triangulation.hpp). Rings larger than max_ring (at most kMaxRecoveryRing)
+// are not tried.
 bool remove_edge(RecoveryMesh& m, index_t u, index_t v, const Target* target, const FrontLocks& locks,
                  int max_ring, FlipCounters& c);
 

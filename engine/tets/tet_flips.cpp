@@ -6,6 +6,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "engine/tets/ring_triangulation.hpp"
+
 namespace tubemesh::tets {
 
 using delaunay::kFreeSlot;
@@ -96,65 +98,32 @@ bool plan_shell_removal(const TetDomain& dom, const EdgeShell& shell, FlipPlan& 
     // (a sub-polygon no better than the bound keeps the bound as its value, which then loses).
     const double bound = std::max(must_exceed, old_min + gain);
     const auto& p = shell.ring;
-    constexpr int N = EdgeShell::kMaxSize;
-    // best[i][j]: the largest smallest collapse over the triangulations of the sub-polygon
-    // p_i .. p_j (closed by the chord p_i p_j), each triangle (p_i, p_k, p_j) making the tets
-    // (p_i, p_k, p_j, b) and (p_k, p_i, p_j, a): the ring runs counter-clockwise seen from b.
-    // Left uninitialised (about 3 kB, and planning runs hundreds of thousands of times): the
-    // loops below write every entry before reading it.
-    std::array<std::array<double, N>, N> best;
-    std::array<std::array<int, N>, N> split;
-    // The collapses of the two tets of the chosen split (valid where best[i][j] beats the
-    // bound, the only case in which they are read): the plan's sum needs them again.
-    std::array<std::array<double, N>, N> split_b, split_a;
-    for (int i = 0; i + 1 < n; ++i) best[i][i + 1] = std::numeric_limits<double>::infinity();
-    for (int gap = 2; gap < n; ++gap) {
-        for (int i = 0; i + gap < n; ++i) {
-            const int j = i + gap;
-            double q_best = bound;
-            int k_best = i + 1;
-            for (int k = i + 1; k < j; ++k) {
-                double q = std::min(best[i][k], best[k][j]);
-                if (q <= q_best) continue;
-                const double qb = collapse_of(dom, p[i], p[k], p[j], shell.b);
-                q = std::min(q, qb);
-                if (q <= q_best) continue;
-                const double qa = collapse_of(dom, p[k], p[i], p[j], shell.a);
-                q = std::min(q, qa);
-                if (q > q_best) {
-                    q_best = q;
-                    k_best = k;
-                    split_b[i][j] = qb;
-                    split_a[i][j] = qa;
-                }
-            }
-            best[i][j] = q_best;
-            split[i][j] = k_best;
-        }
-    }
+    // Triangle (p_i, p_k, p_j) makes the tets (p_i, p_k, p_j, b) and (p_k, p_i, p_j, a): the
+    // ring runs counter-clockwise seen from b. The second tet is not scored when the first
+    // already cannot beat the search's current best.
+    const auto score = [&](int i, int k, int j, double beat) {
+        const double first = collapse_of(dom, p[i], p[k], p[j], shell.b);
+        if (first <= beat) return RingTriangle{first, first, first};
+        const double second = collapse_of(dom, p[k], p[i], p[j], shell.a);
+        return RingTriangle{std::min(first, second), first, second};
+    };
+    RingTriangulation<EdgeShell::kMaxSize> ring;
+    const bool found = ring.solve(n, bound, score, [](int, int) { return true; });
     plan.kind = n == 3 ? FlipKind::Flip32 : n == 4 ? FlipKind::Flip44 : FlipKind::EdgeRemoval;
     plan.old_count = n;
     std::copy_n(shell.tets.begin(), n, plan.old_tets.begin());
     plan.old_min = old_min;
     plan.old_sum = old_sum;
-    plan.new_min = best[0][n - 1];
-    if (!(plan.new_min > bound)) return false;
+    plan.new_min = ring.value();
+    if (!found) return false;
     plan.new_count = 0;
     plan.new_sum = 0;
-    std::array<std::array<int, 2>, N> stack{};
-    int top = 0;
-    stack[top++] = {0, n - 1};
-    while (top > 0) {
-        const auto [i, j] = stack[--top];
-        if (j - i < 2) continue;
-        const int k = split[i][j];
+    ring.for_each_triangle([&](int i, int k, int j, double first, double second) {
         plan.new_tets[plan.new_count++] = {p[i], p[k], p[j], shell.b};
         plan.new_tets[plan.new_count++] = {p[k], p[i], p[j], shell.a};
-        plan.new_sum += split_b[i][j];
-        plan.new_sum += split_a[i][j];
-        stack[top++] = {i, k};
-        stack[top++] = {k, j};
-    }
+        plan.new_sum += first;
+        plan.new_sum += second;
+    });
     return plan.new_min > 0 && all_positive(dom, plan);
 }
 

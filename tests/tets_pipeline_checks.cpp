@@ -174,7 +174,7 @@ TetFigures measure_tets(const std::string& name, const PipelineResult& r) {
 
 TetFigures measure_tets(const std::string& name, const geom::BlockSpec& spec, const MeshOptions& options) {
     const geom::BuiltBlock block = geom::build_block(spec);
-    const geom::PreparedModel prepared = geom::prepare_model(block.model);
+    const geom::PreparedModel prepared = geom::prepare_model(block.model, geom::prepare_options(options));
     const PipelineResult r = run_pipeline(prepared.pipeline_input(), options, Stage::Tets);
     return measure_tets(name, r);
 }

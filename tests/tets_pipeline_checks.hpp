@@ -33,8 +33,8 @@ struct TetFigures {
     std::string first_problems;   // a few offending elements, for the failure message
 };
 
-// Builds the block, prepares it with geom's default sizes and runs the pipeline with
-// `options`. Throws tubemesh::Error when a step fails.
+// Builds the block, prepares it with the sizes of `options` (S, St, n; 0 = geom's defaults)
+// and runs the pipeline with `options`. Throws tubemesh::Error when a step fails.
 TetFigures measure_tets(const std::string& name, const geom::BlockSpec& spec, const MeshOptions& options = {});
 
 // The same measures on a mesh the caller ran (tet_front from the same run).

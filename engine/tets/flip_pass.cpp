@@ -293,6 +293,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                 case FlipKind::Flip32: ++counts.flips32; break;
                 case FlipKind::Flip44: ++counts.flips44; break;
                 case FlipKind::EdgeRemoval: ++counts.edge_removals; break;
+                case FlipKind::PointInsertion: break;  // only the rescue plans these
             }
         }
         pending.swap(waiting);

@@ -169,7 +169,9 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
     if (o.passes > 0 && o.rescue_below > 0) {
         const auto t0 = Clock::now();
         std::fill(changed.begin(), changed.end(), 0);
-        s.rescued = rescue_worst_tets(dom, o.rescue_below, collapses, changed);
+        const RescueCounts r = rescue_worst_tets(dom, o.rescue_below, collapses, changed);
+        s.rescued = r.lifted;
+        s.inserted_points = r.inserted;
         compute_collapses(dom, collapses);  // the rescue compacted the store
         if (s.rescued > 0) {
             // The rescue trades some of the changed tets' sum for their minimum (paper-ex2: a
@@ -183,7 +185,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
             const FlipSweepCounts f = flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, now.mean,
                                                  o.mean_floor, &near, changed, &collapses);
             points_near(dom, changed, poor);
-            for (std::size_t p = 0; p < points; ++p) near[p] |= poor[p];
+            for (std::size_t p = 0; p < near.size(); ++p) near[p] |= poor[p];  // with the inserted points
             for (int ring = 1; ring < kCleanupRings; ++ring) {
                 poor = near;
                 points_near(dom, poor, near);

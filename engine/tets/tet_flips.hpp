@@ -24,7 +24,8 @@
 
 namespace tubemesh::tets {
 
-enum class FlipKind : std::uint8_t { Flip23, Flip32, Flip44, EdgeRemoval };
+// PointInsertion: a plan whose new tets join a new point to a cavity (point_insertion.hpp).
+enum class FlipKind : std::uint8_t { Flip23, Flip32, Flip44, EdgeRemoval, PointInsertion };
 
 struct FlipPlan {
     static constexpr int kMaxOld = EdgeShell::kMaxSize;

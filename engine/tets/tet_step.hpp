@@ -3,8 +3,9 @@
 // tet_front, mesh node ids) -> boundary recovery -> control space -> interior points ->
 // optimisation -> new points and tets appended to the HybridMesh.
 //
-// The front's nodes keep their mesh ids; Steiner points of the recovery and interior points
-// become new mesh points, appended in the domain's order, so the numbering is deterministic.
+// The front's nodes keep their mesh ids; Steiner points of the recovery, interior points and
+// the optimisation's rescue points become new mesh points, appended in the domain's order, so
+// the numbering is deterministic.
 // The mesh's existing cells and boundary faces are not touched: the front triangles become
 // faces shared by a tet and a pyramid / hex-free side (pyramid layer) or boundary faces on
 // the solid's surface (their group stays).

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "engine/tets/point_insertion.hpp"
 #include "engine/tets/smoothing.hpp"
 #include "engine/tets/tet_flips.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
@@ -16,10 +17,16 @@ namespace {
 constexpr int kRescueMoveRounds = 3;
 constexpr int kRescueRounds = 2;
 
-// The old rows of the slots a flip writes (its old tets and their face neighbours) and the
-// store's size: writing them back undoes the flip.
+// Where an inserted point may go, over each face of the tet, as fractions of the way from
+// the face's centroid to the apex that would make the tet on it regular; the rescue's moves
+// then place it. Several, because a high site can lie beyond the front or need a cavity larger
+// than a plan holds (the serpentine lift's flat tet: 9e-5 -> 0.338, from a cavity of 7 tets).
+constexpr double kInsertionHeights[] = {1.0, 0.75, 0.5, 0.3};
+
+// The old rows of the slots a flip writes (its old tets and their face neighbours), the
+// store's size and the point count: writing them back undoes the flip or insertion.
 struct Undo {
-    index_t size = 0;
+    index_t size = 0, point_count = 0;
     std::vector<index_t> slots;
     std::vector<std::array<index_t, 8>> rows;
     std::vector<index_t> points;
@@ -28,6 +35,7 @@ struct Undo {
 
 void save(const TetDomain& dom, const FlipPlan& plan, Undo& u) {
     u.size = dom.tets.size();
+    u.point_count = dom.point_count();
     u.slots.clear();
     u.rows.clear();
     u.points.clear();
@@ -59,6 +67,7 @@ void restore(TetDomain& dom, const Undo& u) {
     dom.tets.set_size(u.size);
     for (std::size_t k = u.points.size(); k-- > 0;)  // last move first: a point may have moved twice
         std::copy_n(u.xyz[k].data(), 3, dom.xyz.data() + std::size_t{3} * u.points[k]);
+    dom.xyz.resize(std::size_t{3} * u.point_count);
 }
 
 // Moves free point p (a vertex of tet seed) to where the worst tet of its star is best, if
@@ -102,12 +111,14 @@ void lift_point(TetDomain& dom, index_t seed, index_t p, double bound, Undo& u, 
     c[2] = best_x.z;
 }
 
-// Applies the plan and lifts the free points of its new tets. Returns the smallest collapse
-// of the tets changed (new tets and the stars of moved points) and, in old_min, the smallest
-// collapse the same places had before; `touched` gets the slots changed.
-double try_rescue(TetDomain& dom, const FlipPlan& plan, double bound, const std::vector<double>& q, Undo& u,
-                  std::vector<index_t>& touched, double& old_min) {
+// Applies the plan (appending the point `inserted` first for a PointInsertion) and lifts the
+// free points of its new tets. Returns the smallest collapse of the tets changed (new tets and
+// the stars of moved points) and, in old_min, the smallest collapse the same places had
+// before; `touched` gets the slots changed.
+double try_rescue(TetDomain& dom, const FlipPlan& plan, const Vec3* inserted, double bound,
+                  const std::vector<double>& q, Undo& u, std::vector<index_t>& touched, double& old_min) {
     save(dom, plan, u);
+    if (inserted) dom.xyz.insert(dom.xyz.end(), {inserted->x, inserted->y, inserted->z});
     const index_t first = dom.tets.size();
     apply_flip_appending(dom, plan);
     std::vector<index_t> fresh;
@@ -134,10 +145,28 @@ double try_rescue(TetDomain& dom, const FlipPlan& plan, double bound, const std:
     return new_min;
 }
 
+// Where rescue_worst_tets tries a new point for tet t: its centroid, and over each face the
+// points from the face's centroid towards the regular apex on the tet's side
+// (kInsertionHeights). Fixed order, so the choice between equal gains is deterministic.
+std::vector<Vec3> insertion_sites(const TetDomain& dom, index_t t) {
+    const index_t* v = dom.tets.vertex(t);
+    std::vector<Vec3> sites;
+    sites.push_back(0.25 * (point_vec(dom, v[0]) + point_vec(dom, v[1]) + point_vec(dom, v[2]) + point_vec(dom, v[3])));
+    for (int f = 0; f < 4; ++f) {
+        const auto& l = kTetFaceToward[f];
+        const Vec3 centroid =
+            (1.0 / 3.0) * (point_vec(dom, v[l[0]]) + point_vec(dom, v[l[1]]) + point_vec(dom, v[l[2]]));
+        const Vec3 apex = regular_apex(dom, t, v[f]);
+        for (const double h : kInsertionHeights) sites.push_back(centroid + h * (apex - centroid));
+    }
+    return sites;
+}
+
 }  // namespace
 
-std::uint64_t rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>& q, std::vector<std::uint8_t>& changed) {
-    std::uint64_t lifted = 0;
+RescueCounts rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>& q,
+                               std::vector<std::uint8_t>& changed) {
+    RescueCounts counts;
     Undo u;
     std::vector<index_t> touched;
     bool stuck = false;
@@ -165,7 +194,7 @@ std::uint64_t rescue_worst_tets(TetDomain& dom, double bound, std::vector<double
                 }
                 if (!ok) continue;
                 double old_min = 0;
-                const double new_min = try_rescue(dom, plan, bound, q, u, touched, old_min);
+                const double new_min = try_rescue(dom, plan, nullptr, bound, q, u, touched, old_min);
                 restore(dom, u);
                 if (new_min - old_min > best_gain) {
                     best_gain = new_min - old_min;
@@ -173,14 +202,33 @@ std::uint64_t rescue_worst_tets(TetDomain& dom, double bound, std::vector<double
                     found = true;
                 }
             }
-            // The first tet no flip lifts bounds the minimum: lifting the ones above it would
+            // No flip: a new point over one of its faces, if one lifts it. Only then, so that
+            // meshes whose worst tets flips lift keep their points.
+            Vec3 best_x{};
+            if (!found)
+                for (const Vec3& x : insertion_sites(dom, t)) {
+                    if (!plan_point_insertion(dom, t, x, plan, q.data())) continue;
+                    double old_min = 0;
+                    const double new_min = try_rescue(dom, plan, &x, bound, q, u, touched, old_min);
+                    restore(dom, u);
+                    if (new_min - old_min > best_gain) {
+                        best_gain = new_min - old_min;
+                        best_plan = plan;
+                        best_x = x;
+                        found = true;
+                    }
+                }
+            // The first tet nothing lifts bounds the minimum: lifting the ones above it would
             // only cost the mean.
             if (!found) {
                 stuck = true;
                 break;
             }
             double old_min = 0;
-            try_rescue(dom, best_plan, bound, q, u, touched, old_min);
+            const bool insert = best_plan.kind == FlipKind::PointInsertion;
+            try_rescue(dom, best_plan, insert ? &best_x : nullptr, bound, q, u, touched, old_min);
+            changed.resize(dom.point_count(), 0);
+            counts.inserted += insert;
             q.resize(dom.tets.size());
             for (const index_t s : touched) {
                 const index_t* v = dom.tets.vertex(s);
@@ -190,11 +238,11 @@ std::uint64_t rescue_worst_tets(TetDomain& dom, double bound, std::vector<double
             for (int j = best_plan.new_count; j < best_plan.old_count; ++j) q[best_plan.old_tets[j]] = 1.0;
             ++lifted_now;
         }
-        lifted += lifted_now;
+        counts.lifted += lifted_now;
         if (stuck || lifted_now == 0) break;
     }
     compact_tets(dom);
-    return lifted;
+    return counts;
 }
 
 }  // namespace tubemesh::tets

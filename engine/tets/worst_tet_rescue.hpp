@@ -7,9 +7,10 @@
 // of its faces and every removal of its inner edges (rings up to EdgeShell::kMaxSize), each
 // with up to 3 moves of every free point of the new tets towards the centroid of its star
 // or the regular apex of one of its tets below the bound (steps 1 .. 1/16), and keeps the
-// one that raises the smallest collapse of the tets it changes most; the first tet none lifts
-// ends the search. Serial and in (collapse, tet) order, so the result depends on the input
-// only; a handful of tets per mesh (~3 ms on paper-ex1).
+// one that raises the smallest collapse of the tets it changes most. A tet no flip lifts tries
+// a new free point instead (point_insertion.hpp), over each of its faces, followed by the same
+// moves; the first tet nothing lifts ends the search. Serial and in (collapse, tet) order, so
+// the result depends on the input only; a handful of tets per mesh (~3 ms on paper-ex1).
 #include <cstdint>
 #include <vector>
 
@@ -17,9 +18,15 @@
 
 namespace tubemesh::tets {
 
-// Returns how many tets it lifted. `q`: every tet's collapse on entry (kept up to date while it
-// works); it compacts the store at the end, so the caller recomputes q. Every point of a
-// changed tet gets changed[p] = 1.
-std::uint64_t rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>& q, std::vector<std::uint8_t>& changed);
+struct RescueCounts {
+    std::uint64_t lifted = 0;    // tets lifted
+    std::uint64_t inserted = 0;  // of those, by a new point
+};
+
+// `q`: every tet's collapse on entry (kept up to date while it works); it compacts the store at
+// the end, so the caller recomputes q. Inserted points are appended to dom.xyz, and `changed`
+// (one flag per point) grows with them; every point of a changed tet gets changed[p] = 1.
+RescueCounts rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>& q,
+                               std::vector<std::uint8_t>& changed);
 
 }  // namespace tubemesh::tets

@@ -190,6 +190,16 @@ TEST(Pipeline, TetPhaseReportsWhereTheOptimisationTimeWent) {
     EXPECT_GE(stat("optimisation passes"), 1.0);
     EXPECT_EQ(stat("optimisation passes"), double(r.tet_stats.optimise.passes));
     EXPECT_LE(stat("recovery s") + stat("refinement s") + total, tets->seconds);
+    const auto count = [&](const std::string& key) {
+        for (const auto& [k, v] : tets->counts)
+            if (k == key) return v;
+        ADD_FAILURE() << "no count '" << key << "'";
+        return -1.0;
+    };
+    EXPECT_EQ(count("worst tets rescued"), double(r.tet_stats.optimise.rescued));
+    EXPECT_EQ(count("rescue points"), double(r.tet_stats.optimise.inserted_points));
+    EXPECT_LE(count("rescue points"), count("worst tets rescued"));
+    EXPECT_LE(count("rescue points"), count("new nodes"));
 }
 
 TEST(Pipeline, NegativeThreadCountIsAnError) {

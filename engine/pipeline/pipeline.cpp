@@ -159,7 +159,11 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
                 {"steiner points kept", double(s.recovery.steiner_kept)},
                 {"refinement rounds", double(s.refine.rounds)},
                 {"flips", double(s.optimise.flips23 + s.optimise.flips32 + s.optimise.flips44 + s.optimise.edge_removals)},
-                {"smoothing moves", double(s.optimise.moves)}};
+                {"smoothing moves", double(s.optimise.moves)},
+                // The worst-tet rescue after the passes: tets lifted, and how many of them by a
+                // new point (those are among the new nodes).
+                {"worst tets rescued", double(s.optimise.rescued)},
+                {"rescue points", double(s.optimise.inserted_points)}};
     r.statistics = {{"recovery s", s.recovery.seconds_total},
                     {"refinement s", s.refine.seconds},
                     {"optimisation s", s.optimise.seconds_total},

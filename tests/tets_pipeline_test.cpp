@@ -35,6 +35,9 @@ namespace {
 
 // Where issue 8 sets the quality bar: the paper's examples and the serpentine lift.
 const char* const kQualityPresets[] = {"paper-ex1", "paper-ex2", "paper-ex3", "serpentine-lift"};
+// The one whose mean bar (0.80) holds at its default size, asserted in CI (2026-12-03:
+// S 20.55, 20,106 tets, mean 0.802, min 0.397); the others are the gaps executable's.
+const char* const kMeanMetPreset = "paper-ex3";
 
 std::string param_name(std::string n) {
     for (char& c : n)
@@ -98,6 +101,7 @@ TEST_P(PresetTets, FillTheFront) { expect_tets_fill_the_front(preset_figures(Get
 TEST_P(SeedTets, FillTheFront) { expect_tets_fill_the_front(seed_figures(GetParam())); }
 // Shares the run of PresetTets' block (figures() meshes each block once per process).
 TEST_P(PresetTetMinimum, CollapseMinimum) { expect_tet_minimum(preset_figures(GetParam())); }
+TEST_P(PresetTetMean, CollapseMean) { expect_tet_mean(preset_figures(GetParam())); }
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(PresetTetMean);
 
 #ifndef TUBEMESH_TETS_HEAVY
@@ -122,6 +126,7 @@ TEST(ThinRingTets, NoFlatTetWherePyramidFacesMeet) {
 INSTANTIATE_TEST_SUITE_P(All, PresetTets, ::testing::ValuesIn(preset_names(false)), preset_test_name);
 INSTANTIATE_TEST_SUITE_P(Random, SeedTets, ::testing::Range(1, kCiSeeds + 1), seed_test_name);
 INSTANTIATE_TEST_SUITE_P(Paper, PresetTetMinimum, ::testing::ValuesIn(quality_presets(true, false)), preset_test_name);
+INSTANTIATE_TEST_SUITE_P(Paper, PresetTetMean, ::testing::Values(std::string(kMeanMetPreset)), preset_test_name);
 #else
 INSTANTIATE_TEST_SUITE_P(Heavy, PresetTets, ::testing::ValuesIn(preset_names(true)), preset_test_name);
 INSTANTIATE_TEST_SUITE_P(Random, SeedTets, ::testing::Range(kCiSeeds + 1, kLastSeed + 1), seed_test_name);
@@ -131,7 +136,14 @@ INSTANTIATE_TEST_SUITE_P(Heavy, PresetTetMinimum, ::testing::ValuesIn(quality_pr
 #else  // TUBEMESH_TETS_GAPS
 
 TEST_P(PresetTetMean, CollapseMean) { expect_tet_mean(preset_figures(GetParam())); }
-INSTANTIATE_TEST_SUITE_P(Paper, PresetTetMean, ::testing::ValuesIn(quality_presets(true, true)), preset_test_name);
+// The mean bar where it does not hold yet (kMeanMetPreset runs in CI).
+std::vector<std::string> mean_gap_presets() {
+    std::vector<std::string> names;
+    for (const std::string& n : quality_presets(true, true))
+        if (n != kMeanMetPreset) names.push_back(n);
+    return names;
+}
+INSTANTIATE_TEST_SUITE_P(Paper, PresetTetMean, ::testing::ValuesIn(mean_gap_presets()), preset_test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(PresetTets);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(SeedTets);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(PresetTetMinimum);

@@ -28,9 +28,13 @@ FaceProperties face_properties(const Model& model, int face_id) {
 
 RoughMeasures rough_measures(const Model& model, const std::vector<int>& skip) {
     RoughMeasures m;
-    GProp_GProps volume;
-    BRepGProp::VolumeProperties(model.impl().solid, volume);
-    m.volume = volume.Mass();
+    if (model.impl().fixed_order_volume) {
+        m.volume = *model.impl().fixed_order_volume;
+    } else {
+        GProp_GProps volume;
+        BRepGProp::VolumeProperties(model.impl().solid, volume);
+        m.volume = volume.Mass();
+    }
     std::vector<char> skipped(static_cast<std::size_t>(model.face_count()) + 1, 0);
     for (int f : skip)
         if (f >= 1 && f <= model.face_count()) skipped[static_cast<std::size_t>(f)] = 1;

@@ -142,7 +142,7 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
         if (props.Mass() <= 0)
             throw Error("solid " + std::to_string(report.solid_index) + " of " + quoted(path) +
                         " has no positive volume (it is empty or inside out): repair it in the CAD tool");
-        return make_model(final_solids.front(), std::move(report));
+        return make_model(final_solids.front(), std::move(report), props.Mass());
     } catch (const Standard_Failure& e) {
         throw Error("cannot import " + quoted(path) + ": OpenCASCADE failed with \"" + e.GetMessageString() + "\"");
     }

@@ -10,9 +10,10 @@
 
 namespace tubemesh::geom {
 
-Model make_model(const TopoDS_Solid& solid, ImportReport report) {
+Model make_model(const TopoDS_Solid& solid, ImportReport report, std::optional<double> fixed_order_volume) {
     auto impl = std::make_unique<Model::Impl>();
     impl->solid = solid;
+    impl->fixed_order_volume = fixed_order_volume;
     TopExp::MapShapes(solid, TopAbs_FACE, impl->faces);
     TopExp::MapShapes(solid, TopAbs_EDGE, impl->edges);
     impl->report = std::move(report);

@@ -1,6 +1,7 @@
 // geom::import_model and geom::write_step: formats, units, solid selection, healing and the
 // errors a user sees. Files are written by OpenCASCADE in the test (tubemesh_occt).
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepGProp.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
@@ -13,6 +14,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
+#include <GProp_GProps.hxx>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,6 +25,7 @@
 #include "engine/core/types.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
+#include "geom/face_properties.hpp"
 #include "geom/import.hpp"
 #include "geom/model_occt.hpp"
 #include "geom/solid_check.hpp"
@@ -203,6 +206,27 @@ void expect_round_trip(const std::string& preset, const std::string& unit) {
     EXPECT_LT(rel(m.volume(), built.info.volume), 1e-6);
     const BoundingBox a = built.model.bounds(), b = m.bounds();
     EXPECT_NEAR(b.max.x - b.min.x, a.max.x - a.min.x, 1e-6 * (a.max.x - a.min.x));
+}
+
+// Import's positive-volume check integrates the volume once; the element budget's rough
+// measures take that value instead of integrating again, and it is exactly what integrating
+// the imported solid gives. A built model has none and gets the same figure computed.
+TEST(GeomImport, RoughVolumeIsImportsOwnIntegration) {
+    const BuiltBlock built = build_block(preset_spec("paper-ex2"));
+    const fs::path path = scratch("rough-volume.step");
+    write_step(built.model, path);
+    const Model m = import_model(path);
+    ASSERT_TRUE(m.impl().fixed_order_volume.has_value());
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(solid_of(m), props);
+    EXPECT_EQ(*m.impl().fixed_order_volume, props.Mass());
+    EXPECT_EQ(rough_measures(m, {}).volume, props.Mass());
+    EXPECT_LT(rel(props.Mass(), built.info.volume), 0.05);  // fixed order: a rough figure
+
+    EXPECT_FALSE(built.model.impl().fixed_order_volume.has_value());
+    GProp_GProps built_props;
+    BRepGProp::VolumeProperties(solid_of(built.model), built_props);
+    EXPECT_EQ(rough_measures(built.model, {}).volume, built_props.Mass());
 }
 
 TEST(GeomImport, StepRoundTripKeepsSolidVolumeAndUnits) {

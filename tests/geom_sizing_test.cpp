@@ -1,8 +1,14 @@
 // Sizing (paper §2): defaults, the three rules in the paper's order on constructed cases, and
 // the guards that keep a ring and its pyramids clear of faces, other rings and the bend.
+#include <BRepBndLib.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
+#include <TopoDS_Compound.hxx>
 #include <gtest/gtest.h>
 
 #include "engine/core/types.hpp"
+#include "geom/model_occt.hpp"
 #include "geom/sizing.hpp"
 #include "tests/geom_tubes_solids.hpp"
 
@@ -35,6 +41,36 @@ TEST(GeomSizing, DefaultsComeFromTheTubeDiameterAndTheBox) {
     EXPECT_NEAR(p.dcb, 0.5 - kR, 1e-7);  // to the four side faces
     EXPECT_TRUE(std::isinf(p.dc));
     EXPECT_TRUE(std::isinf(p.rc));
+}
+
+// Dcb is measured to the centre line's polyline, which drops the points of straight runs
+// before OpenCASCADE sees it: a pipe that comes closest to a face in the middle of a bend
+// still gets the true wall-to-face distance, within the centre line's 1%-of-r chord error.
+TEST(GeomSizing, DcbFollowsABendTowardsAFace) {
+    const geom::Model model = test::model_of(test::box_with_pipes(
+        {0, 0, 0}, {1, 1, 1},
+        {test::spline_spine({gp_Pnt(0.5, 0.5, -0.1), gp_Pnt(0.5, 0.2, 0.5), gp_Pnt(0.5, 0.5, 1.1)})}, kR));
+    const geom::TubeSearch found = geom::find_tubes(model);
+    ASSERT_EQ(found.tubes.size(), 1u);
+    const geom::SizePlan p = geom::plan_sizes(model, found.tubes);
+    // The face y = 0 and the wall, by OpenCASCADE directly.
+    int y0 = 0;
+    for (int f = 1; f <= model.face_count(); ++f) {
+        Bnd_Box b;
+        BRepBndLib::Add(geom::face_of(model, f), b);
+        double x0, ya, z0, x1, yb, z1;
+        b.Get(x0, ya, z0, x1, yb, z1);
+        if (yb < 1e-6) y0 = f;
+    }
+    ASSERT_GT(y0, 0);
+    BRep_Builder builder;
+    TopoDS_Compound wall;
+    builder.MakeCompound(wall);
+    for (int f : found.tubes[0].faces) builder.Add(wall, geom::face_of(model, f));
+    BRepExtrema_DistShapeShape dist(geom::face_of(model, y0), wall);
+    ASSERT_TRUE(dist.IsDone());
+    EXPECT_LT(dist.Value(), 0.5 - kR);  // nearer than the straight ends: the bend decides
+    EXPECT_NEAR(p.dcb, dist.Value(), 0.01 * kR);
 }
 
 TEST(GeomSizing, PipeNearAFaceTriggersRuleOne) {

@@ -60,14 +60,7 @@ bool plan_point_insertion(const TetDomain& dom, index_t t, const Vec3& x, FlipPl
         if (c == Cone::Refused || plan.old_count == FlipPlan::kMaxOld) return false;
         plan.old_tets[plan.old_count++] = grow_into;
     }
-    plan.old_min = std::numeric_limits<double>::infinity();
-    plan.old_sum = 0;
-    for (int i = 0; i < plan.old_count; ++i) {
-        const index_t* v = dom.tets.vertex(plan.old_tets[i]);
-        const double q = slot_collapse ? slot_collapse[plan.old_tets[i]] : collapse_of(dom, v[0], v[1], v[2], v[3]);
-        plan.old_min = std::min(plan.old_min, q);
-        plan.old_sum += q;
-    }
+    plan.old_min = min_collapse_of_tets(dom, plan.old_tets.data(), plan.old_count, &plan.old_sum, slot_collapse);
     plan.new_min = std::numeric_limits<double>::infinity();
     plan.new_sum = 0;
     for (int j = 0; j < plan.new_count; ++j) {

@@ -21,19 +21,6 @@ bool all_positive(const TetDomain& dom, const FlipPlan& plan) {
     return true;
 }
 
-double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count, double* sum,
-                            const double* slot_collapse) {
-    double q = std::numeric_limits<double>::infinity(), total = 0;
-    for (int i = 0; i < count; ++i) {
-        const index_t* v = dom.tets.vertex(tets[i]);
-        const double x = slot_collapse ? slot_collapse[tets[i]] : collapse_of(dom, v[0], v[1], v[2], v[3]);
-        q = std::min(q, x);
-        total += x;
-    }
-    if (sum) *sum = total;
-    return q;
-}
-
 using FaceKey = std::array<index_t, 3>;
 
 FaceKey face_key(index_t a, index_t b, index_t c) {
@@ -48,6 +35,19 @@ FaceKey face_key(const index_t* v, int f) {
 }
 
 }  // namespace
+
+double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count, double* sum,
+                            const double* slot_collapse) {
+    double q = std::numeric_limits<double>::infinity(), total = 0;
+    for (int i = 0; i < count; ++i) {
+        const index_t* v = dom.tets.vertex(tets[i]);
+        const double x = slot_collapse ? slot_collapse[tets[i]] : collapse_of(dom, v[0], v[1], v[2], v[3]);
+        q = std::min(q, x);
+        total += x;
+    }
+    if (sum) *sum = total;
+    return q;
+}
 
 bool plan_flip23(const TetDomain& dom, index_t t, int f, FlipPlan& plan, const double* slot_collapse,
                  double must_exceed, double gain) {

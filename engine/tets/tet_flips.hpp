@@ -46,6 +46,11 @@ struct FlipPlan {
 // collapse_of over the slot's vertex row gives it; the planners read the old tets' collapses
 // from it instead of computing them again (a sweep plans most tets many times over).
 
+// The smallest collapse of `count` tets (slot ids) and, with `sum`, their sum in that order;
+// read from slot_collapse when given: the old tets' figures of every plan.
+double min_collapse_of_tets(const TetDomain& dom, const index_t* tets, int count, double* sum,
+                            const double* slot_collapse = nullptr);
+
 // Plans the 2-3 flip of face f of tet t (the face opposite vertex f). False when the face is a
 // front face or the three new tets would not all be positively oriented (exact test). Also
 // false when the new tets' smallest collapse is not above both must_exceed and the old tets'

@@ -183,6 +183,20 @@ RescueCounts rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>
             FlipPlan plan, best_plan;
             double best_gain = 1e-6;
             bool found = false;
+            Vec3 best_x{};
+            // Tries `plan` (with the new point x for an insertion), undoes it and keeps it if
+            // it lifts the changed tets' minimum most so far.
+            const auto consider = [&](const Vec3* x) {
+                double old_min = 0;
+                const double new_min = try_rescue(dom, plan, x, bound, q, u, touched, old_min);
+                restore(dom, u);
+                if (new_min - old_min > best_gain) {
+                    best_gain = new_min - old_min;
+                    best_plan = plan;
+                    if (x) best_x = *x;
+                    found = true;
+                }
+            };
             for (int c = 0; c < 10; ++c) {
                 bool ok;
                 if (c < 4) ok = plan_flip23(dom, t, c, plan, q.data());
@@ -192,32 +206,13 @@ RescueCounts rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>
                                            -std::numeric_limits<double>::infinity(),
                                            -std::numeric_limits<double>::infinity(), q.data());
                 }
-                if (!ok) continue;
-                double old_min = 0;
-                const double new_min = try_rescue(dom, plan, nullptr, bound, q, u, touched, old_min);
-                restore(dom, u);
-                if (new_min - old_min > best_gain) {
-                    best_gain = new_min - old_min;
-                    best_plan = plan;
-                    found = true;
-                }
+                if (ok) consider(nullptr);
             }
             // No flip: a new point over one of its faces, if one lifts it. Only then, so that
             // meshes whose worst tets flips lift keep their points.
-            Vec3 best_x{};
             if (!found)
-                for (const Vec3& x : insertion_sites(dom, t)) {
-                    if (!plan_point_insertion(dom, t, x, plan, q.data())) continue;
-                    double old_min = 0;
-                    const double new_min = try_rescue(dom, plan, &x, bound, q, u, touched, old_min);
-                    restore(dom, u);
-                    if (new_min - old_min > best_gain) {
-                        best_gain = new_min - old_min;
-                        best_plan = plan;
-                        best_x = x;
-                        found = true;
-                    }
-                }
+                for (const Vec3& x : insertion_sites(dom, t))
+                    if (plan_point_insertion(dom, t, x, plan, q.data())) consider(&x);
             // The first tet nothing lifts bounds the minimum: lifting the ones above it would
             // only cost the mean.
             if (!found) {

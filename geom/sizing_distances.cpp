@@ -51,14 +51,6 @@ double box_distance(const Chunk& a, const Chunk& b) {
     return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-// Distance from p to the segment a-b.
-double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
-    const Vec3 ab = b - a;
-    const double len2 = dot(ab, ab);
-    const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return norm(p - (a + t * ab));
-}
-
 // Douglas-Peucker: the points of `line` to keep so that no dropped point lies farther than
 // `tolerance` from the kept polyline, which then lies within `tolerance` of the original, so
 // every distance to it moves by at most that. Ends always kept; deterministic.
@@ -73,7 +65,7 @@ std::vector<Vec3> without_straight_runs(const std::vector<Vec3>& line, double to
         double worst = -1;
         std::size_t at = a;
         for (std::size_t i = a + 1; i < b; ++i) {
-            const double d = point_segment_distance(line[i], line[a], line[b]);
+            const double d = segment_distance(line[i], line[i], line[a], line[b]);  // point to chord
             if (d > worst) {
                 worst = d;
                 at = i;

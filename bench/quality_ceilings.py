@@ -36,6 +36,7 @@ ROWS = [
     ("paper-ex2, S 1.1, gradation 1.2", "paper-ex2", ["--size", "1.1", "--gradation", "1.2"]),
     ("11 x 12 x 11 box without the holes, S 1.1", "box:11000,12000,11000", ["--size", "1100"]),
     ("paper-ex3, S 40 (defaults)", "paper-ex3", ["--size", "40"]),
+    ("paper-ex3, S 40, gradation 1.3", "paper-ex3", ["--size", "40", "--gradation", "1.3"]),
     ("paper-ex3, S 40, gradation 1.2", "paper-ex3", ["--size", "40", "--gradation", "1.2"]),
     ("paper-ex3, S 40, gradation 1.1", "paper-ex3", ["--size", "40", "--gradation", "1.1"]),
     ("paper-ex3, S 20", "paper-ex3", ["--size", "20"]),

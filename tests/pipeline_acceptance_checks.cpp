@@ -176,7 +176,7 @@ void measure_surface(const geom::BuiltBlock& block, const geom::PreparedModel& p
     out.surface = inspect_surface(mesh, static_cast<index_t>(prepared.geometry.tubes.size()));
 
     // Nodes on their faces, each (node, face) once.
-    SurfaceSizing sizing = surface_sizing(input, r.sweep.rings, options);  // the field the mesher had
+    SurfaceSizing sizing = surface_sizing(input, r.sweep.rings, options, r.surface_size_caps);  // the field the mesher had
     const SizeField size(sizing.options, std::move(sizing.sources));
     std::map<std::pair<index_t, index_t>, char> seen;
     for (std::size_t t = 0; t < tris.group.size(); ++t) {

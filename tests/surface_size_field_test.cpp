@@ -33,6 +33,26 @@ TEST(SizeField, MatchesBruteForceWithMixedSizes) {
     EXPECT_NEAR(field.min_size(), 0.01, 0.005);
 }
 
+TEST(SizeField, BelowAgreesWithTheValue) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> pos(0, 10), sz(0.01, 0.5), lim(0, 0.6);
+    std::vector<SizeSource> sources;
+    for (int i = 0; i < 300; ++i) sources.push_back({{pos(rng), pos(rng), pos(rng) * 0.3}, sz(rng)});
+    const SizeField field({0.4, 0.6}, sources);
+    int yes = 0;
+    for (int q = 0; q < 4000; ++q) {
+        const Vec3 p{pos(rng), pos(rng), pos(rng) * 0.3};
+        const double limit = lim(rng), h = brute_force(sources, 0.4, 0.6, p);
+        ASSERT_EQ(field.below(p, limit), h < limit) << q << ": h " << h << ", limit " << limit;
+        yes += h < limit;
+    }
+    EXPECT_GT(yes, 400);  // both answers are exercised
+    EXPECT_LT(yes, 3600);
+    const SizeField empty({0.4, 0.6}, {});
+    EXPECT_FALSE(empty.below({1, 1, 1}, 0.4));
+    EXPECT_TRUE(empty.below({1, 1, 1}, 0.41));
+}
+
 TEST(SizeField, SlopeIsBoundedByTheGrowthRate) {
     std::vector<SizeSource> sources;
     add_polygon_sources(std::vector<Vec3>{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}, {0, 0.1, 0}}, sources);

@@ -26,8 +26,11 @@
 #include <string>
 #include <vector>
 
+#include "engine/pipeline/tet_size_caps.hpp"
+#include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
+#include "geom/prepare.hpp"
 #include "tests/tets_pipeline_checks.hpp"
 
 namespace tubemesh::tets_acceptance {
@@ -121,6 +124,36 @@ TEST(ThinRingTets, NoFlatTetWherePyramidFacesMeet) {
     expect_tets_fill_the_front(f);
     EXPECT_GE(f.min_collapse, 0.25);
     EXPECT_EQ(f.below_0_2, 0);
+}
+
+// Pipes 0.5 beside the long side walls of an 8 x 40 x 3 block (default S 1.64, about 47 k tets,
+// under a second). The tet step grades from the rings' quads (0.05) and asks for about 0.31 at
+// the walls, but the surface field, which grades only from the end walls' ring holes, gave the
+// side walls triangles of about 1 there: the tets on them were caps (collapse 0.287). The
+// surface is now meshed again with caps where its triangles pass twice the tets' size
+// (engine/pipeline/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
+TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {
+    geom::BlockSpec spec;
+    spec.name = "two pipes beside the walls";
+    spec.host.size = {8, 40, 3};
+    for (double y : {0.5, 39.5}) {
+        geom::PipeSpec pipe;
+        pipe.kind = geom::PathKind::Line;
+        pipe.diameter = 0.032;
+        pipe.points = {{0, y, 1.5}, {8, y, 1.5}};
+        spec.pipes.push_back(pipe);
+    }
+    const MeshOptions options;
+    const geom::BuiltBlock block = geom::build_block(spec);
+    const geom::PreparedModel prepared = geom::prepare_model(block.model, geom::prepare_options(options));
+    const PipelineResult r = run_pipeline(prepared.pipeline_input(), options, Stage::Tets);
+    EXPECT_FALSE(r.surface_size_caps.empty());
+    // The kept surface: none of its triangles too large for the tets beside them.
+    EXPECT_TRUE(tet_size_caps(r.mesh, r.sweep.outer_quads, 0, prepared.geometry.size, options.tets.gradation).empty());
+    const TetFigures f = measure_tets(spec.name, r);
+    std::printf("%s", summary(f).c_str());
+    expect_tets_fill_the_front(f);
+    expect_tet_minimum(f);
 }
 
 INSTANTIATE_TEST_SUITE_P(All, PresetTets, ::testing::ValuesIn(preset_names(false)), preset_test_name);

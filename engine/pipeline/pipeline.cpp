@@ -10,6 +10,7 @@
 
 #include "engine/surface/face_boundaries.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
+#include "engine/pipeline/tet_size_caps.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
 
 namespace tubemesh {
@@ -54,37 +55,48 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
     out.phases.push_back(std::move(r));
 }
 
-void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
-    const auto t0 = Clock::now();
-    const DiscreteGeometry& g = in.geometry;
-    HybridMesh& mesh = out.mesh;
-
-    std::vector<index_t> tube_loop_edges;
+// The faces a tube's hex ring covers (its wall faces): they get no triangles.
+std::unordered_set<index_t> tube_wall_faces(const DiscreteGeometry& g) {
     std::unordered_set<index_t> walls;
+    for (const TubeData& t : g.tubes) walls.insert(t.wall_faces.begin(), t.wall_faces.end());
+    return walls;
+}
+
+// Surface passes at most (run_surface).
+constexpr int kSurfacePasses = 4;
+
+struct SurfacePass {
+    surface::SurfaceMeshStats stats;
+    index_t edge_points = 0;
+};
+
+// Every face that is not a tube wall, meshed into `mesh` with the surface field plus `caps`.
+SurfacePass mesh_faces(const PipelineInput& in, const MeshOptions& opt, const SweepResult& sweep,
+                       std::span<const SizeSource> caps, HybridMesh& mesh) {
+    const DiscreteGeometry& g = in.geometry;
+    std::vector<index_t> tube_loop_edges;
     for (const TubeData& t : g.tubes) {
         tube_loop_edges.insert(tube_loop_edges.end(), t.loop1_edges.begin(), t.loop1_edges.end());
         tube_loop_edges.insert(tube_loop_edges.end(), t.loop2_edges.begin(), t.loop2_edges.end());
-        walls.insert(t.wall_faces.begin(), t.wall_faces.end());
     }
+    const std::unordered_set<index_t> walls = tube_wall_faces(g);
 
-    SurfaceSizing sizing = surface_sizing(in, out.sweep.rings, opt);
+    SurfaceSizing sizing = surface_sizing(in, sweep.rings, opt, caps);
     const std::vector<EdgePolyline>& edges = sizing.edges;
     const SizeField size(sizing.options, std::move(sizing.sources));
 
+    SurfacePass pass;
     const index_t points_before = mesh.point_count();
     const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(edges, mesh);
-    const index_t edge_points = mesh.point_count() - points_before;
+    pass.edge_points = mesh.point_count() - points_before;
 
-    index_t face_total = 0;
-    for (const PipelineFace& f : in.faces) face_total += !(f.tube_wall || walls.count(f.id));
-    PhaseProgress progress(opt.progress, "surface", face_total);
     std::vector<surface::SurfaceFace> faces;
     for (const PipelineFace& f : in.faces) {
         if (f.tube_wall || walls.count(f.id)) continue;
         const SurfaceMap* map = in.surfaces(f.id);
         if (!map) throw Error("face_" + std::to_string(f.id) + " has no surface map");
         std::vector<surface::HolePolygon> holes;
-        for (const TubeRing& ring : out.sweep.rings)
+        for (const TubeRing& ring : sweep.rings)
             for (const RingEnd& end : ring.ends)
                 if (end.host == f.id) holes.push_back({end.outer_nodes, end.outer_uv});
         surface::SurfaceFace face;
@@ -93,12 +105,47 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
         face.group = mesh.surface_group_id("face_" + std::to_string(f.id));
         faces.push_back(std::move(face));
     }
-    const surface::SurfaceMeshStats s = surface::mesh_surfaces(faces, size, opt.surface, mesh);
+    pass.stats = surface::mesh_surfaces(faces, size, opt.surface, mesh);
+    return pass;
+}
+
+void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
+    const auto t0 = Clock::now();
+    const std::unordered_set<index_t> walls = tube_wall_faces(in.geometry);
+    index_t face_total = 0;
+    for (const PipelineFace& f : in.faces) face_total += !(f.tube_wall || walls.count(f.id));
+    PhaseProgress progress(opt.progress, "surface", face_total);
+
+    // Each pass meshes the faces into a copy of the rings-only mesh (cheap to copy). Where a
+    // pass leaves triangles too large for the tets beside them, their caps join the field and
+    // the faces are meshed again (tet_size_caps.hpp says why). The caps only lower the field,
+    // but a capped triangle's successors may sit nearer the pipe, where the tets are smaller
+    // still: two passes were enough on every block measured (2026-12-03: the serpentine lift,
+    // lifts of 2 and 40 pipes), and the last pass is kept whatever it leaves.
+    const index_t first_triangle = out.mesh.face_count(FaceKind::Tri);
+    SurfacePass pass;
+    int passes = 0;
+    for (int k = 1;; ++k) {
+        passes = k;
+        HybridMesh trial = out.mesh;
+        pass = mesh_faces(in, opt, out.sweep, out.surface_size_caps, trial);
+        const std::vector<SizeSource> caps =
+            tet_size_caps(trial, out.sweep.outer_quads, first_triangle, in.geometry.size, opt.tets.gradation);
+        if (caps.empty() || k == kSurfacePasses) {
+            out.mesh = std::move(trial);
+            break;
+        }
+        out.surface_size_caps.insert(out.surface_size_caps.end(), caps.begin(), caps.end());
+    }
+
+    const surface::SurfaceMeshStats& s = pass.stats;
     PhaseReport r{"surface", seconds_since(t0), {}};
     r.counts = {{"faces", double(s.faces)},
-                {"edge nodes", double(edge_points)},
+                {"edge nodes", double(pass.edge_points)},
                 {"interior nodes", double(s.interior_nodes)},
-                {"triangles", double(s.triangles)}};
+                {"triangles", double(s.triangles)},
+                {"passes", double(passes)},
+                {"size caps", double(out.surface_size_caps.size())}};
     progress.finish();
     out.phases.push_back(std::move(r));
 }

@@ -155,6 +155,9 @@ struct PipelineResult {
     std::vector<std::string> warnings;  // what the user should know about this mesh, one line each
     CheckReport check;  // filled by check_result (stage_check.hpp); empty before
     SweepResult sweep;
+    // After Surface: the local sizes the faces were meshed again with, where a first pass left
+    // triangles too large for the tets beside them (tet_size_caps.hpp); empty when none was.
+    std::vector<SizeSource> surface_size_caps;
     // After Tets: recovery, refinement and optimisation statistics.
     tets::TetStepStats tet_stats;
     // After Pyramids: the closed boundary of the tet region, 3 node ids per triangle, normal

@@ -7,7 +7,8 @@
 
 namespace tubemesh {
 
-SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> rings, const MeshOptions& options) {
+SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> rings, const MeshOptions& options,
+                             std::span<const SizeSource> caps) {
     const DiscreteGeometry& g = in.geometry;
     if (!(g.size > 0)) throw Error("the overall mesh size S must be positive to mesh the surfaces");
     std::unordered_set<index_t> walls;
@@ -19,7 +20,8 @@ SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> 
     std::vector<SizeSource> ring_sources;
     for (const TubeRing& ring : rings)
         for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, ring_sources);
-    // geom cut the B-rep edges at S (finer where they curve); where the rings ask for less they
+    ring_sources.insert(ring_sources.end(), caps.begin(), caps.end());
+    // geom cut the B-rep edges at S (finer where they curve); where the rings or caps ask for less they
     // are cut again, on the first face (in id order) that uses them. Then the edges' own short
     // segments (curved or short edges) become sources too, so the faces grade from them.
     std::unordered_map<index_t, surface::EdgeOnFace> edge_faces;

@@ -1,6 +1,7 @@
 #pragma once
 // The surface phase's size field (paper §4): S everywhere, finer near the rings' outer
-// polygons, and the B-rep edges cut again where the rings ask for less than geom's cut at S.
+// polygons and where the tets beside a face need it (tet_size_caps.hpp), and the B-rep edges
+// cut again where these ask for less than geom's cut at S.
 // The pipeline meshes the faces with it; tests that measure the surface against the field the
 // mesher was given build it here too, so there is one recipe.
 #include <span>
@@ -15,11 +16,13 @@ namespace tubemesh {
 struct SurfaceSizing {
     std::vector<EdgePolyline> edges;  // every B-rep edge of the model, cut to the field
     SizeFieldOptions options;         // max size S, growth from MeshOptions::size_growth
-    std::vector<SizeSource> sources;  // ring polygons, then the cut edges' short segments
+    std::vector<SizeSource> sources;  // ring polygons, caps, then the cut edges' short segments
 };
 
-// `rings`: the sweep's rings (their ends' outer polygons). Throws tubemesh::Error when S is not
-// positive.
-SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> rings, const MeshOptions& options);
+// `rings`: the sweep's rings (their ends' outer polygons); `caps`: local sizes from
+// tet_size_caps (PipelineResult::surface_size_caps), empty on a first pass. Throws
+// tubemesh::Error when S is not positive.
+SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> rings, const MeshOptions& options,
+                             std::span<const SizeSource> caps);
 
 }  // namespace tubemesh

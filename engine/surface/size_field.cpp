@@ -65,6 +65,16 @@ double SizeField::at(const Vec3& p) const {
     return best;
 }
 
+bool SizeField::below(const Vec3& p, double limit) const {
+    if (options_.max_size < limit) return true;
+    if (!index_ || !(min_size_ < limit)) return false;
+    thread_local std::vector<Neighbor> hits;
+    index_->within(p, (limit - min_size_) / options_.growth, hits);
+    for (const Neighbor& h : hits)
+        if (size_[h.index] + options_.growth * std::sqrt(h.distance_squared) < limit) return true;
+    return false;
+}
+
 void add_polygon_sources(std::span<const Vec3> polygon, std::vector<SizeSource>& out) {
     const std::size_t n = polygon.size();
     if (n < 3) throw Error("size field: a ring polygon needs at least 3 nodes, got " + std::to_string(n));

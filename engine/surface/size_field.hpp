@@ -43,6 +43,9 @@ public:
 
     // h(p). Safe to call from several threads at once.
     double at(const Vec3& p) const;
+    // Whether h(p) < limit. Cheaper than at() where the answer is no and the limit small: it
+    // looks only at the sources within (limit - min_size) / g. Thread-safe.
+    bool below(const Vec3& p, double limit) const;
 
     double max_size() const { return options_.max_size; }
     double growth() const { return options_.growth; }

@@ -1,0 +1,60 @@
+#include "engine/pipeline/tet_size_caps.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tubemesh {
+
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) {
+    const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+}  // namespace
+
+std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const index_t> outer_quads,
+                                      index_t first_triangle, double far_size, double gradation) {
+    if (!(gradation >= 1.0)) throw Error("the tet gradation must be at least 1");
+    const FaceBlock& tris = mesh.block(FaceKind::Tri);
+    const index_t triangles = static_cast<index_t>(tris.nodes.size() / 3);
+    if (outer_quads.empty() || first_triangle >= triangles) return {};
+
+    std::vector<SizeSource> quads;
+    quads.reserve(outer_quads.size() / 4);
+    for (std::size_t q = 0; q + 3 < outer_quads.size(); q += 4) {
+        Vec3 c{0, 0, 0};
+        double edges = 0;
+        for (int k = 0; k < 4; ++k) {
+            const Vec3 p = mesh.point(outer_quads[q + k]);
+            c.x += 0.25 * p.x, c.y += 0.25 * p.y, c.z += 0.25 * p.z;
+            edges += distance(p, mesh.point(outer_quads[q + (k + 1) % 4]));
+        }
+        quads.push_back({c, 0.25 * edges});
+    }
+    // Gradation 1 means the front's size everywhere; the field needs a positive growth.
+    const SizeField volume({far_size, std::max(gradation - 1.0, 1e-9)}, std::move(quads));
+
+    const index_t n = triangles - first_triangle;
+    std::vector<double> cap(n, 0.0);  // 0: the triangle is fine
+    std::vector<Vec3> centroid(n);
+    tbb::parallel_for(index_t{0}, n, [&](index_t i) {
+        const index_t* t = &tris.nodes[3 * (first_triangle + i)];
+        const Vec3 a = mesh.point(t[0]), b = mesh.point(t[1]), c = mesh.point(t[2]);
+        const Vec3 m{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+        const double mean_edge = (distance(a, b) + distance(b, c) + distance(c, a)) / 3;
+        if (volume.below(m, mean_edge / kTooLarge)) {
+            cap[i] = kCapped * volume.at(m);
+            centroid[i] = m;
+        }
+    });
+    std::vector<SizeSource> out;
+    for (index_t i = 0; i < n; ++i)
+        if (cap[i] > 0) out.push_back({centroid[i], cap[i]});
+    return out;
+}
+
+}  // namespace tubemesh

@@ -1,0 +1,82 @@
+// tet_size_caps (engine/pipeline/tet_size_caps.hpp) on hand-made meshes: one ring outer quad
+// and surface triangles at known distances, measured against the volume size computed here
+// from its definition, h(x) = min(S, q + (G - 1)|x - c|) for the quad's centroid c and mean
+// edge q.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "engine/pipeline/tet_size_caps.hpp"
+
+namespace {
+
+using namespace tubemesh;
+
+constexpr double kS = 3.0, kG = 1.6;
+
+// A 0.1 x 0.1 outer quad in the plane z = 0 with its centroid at the origin: q = 0.1.
+struct Scene {
+    HybridMesh mesh;
+    std::vector<index_t> quad;
+    index_t group = 0;
+
+    Scene() {
+        for (auto [x, y] : {std::array{-0.05, -0.05}, {0.05, -0.05}, {0.05, 0.05}, {-0.05, 0.05}})
+            quad.push_back(mesh.add_point(x, y, 0));
+        group = mesh.surface_group_id("face_1");
+    }
+    // An equilateral triangle of edge `a` in the plane y = `y`, centred on (0, y, 0).
+    void triangle(double y, double a) {
+        const double r = a / std::sqrt(3.0);  // circumradius
+        std::array<index_t, 3> t{};
+        for (int k = 0; k < 3; ++k) {
+            const double phi = 2 * M_PI * k / 3;
+            t[k] = mesh.add_point(r * std::cos(phi), y, r * std::sin(phi));
+        }
+        mesh.add_face(FaceKind::Tri, t, group);
+    }
+};
+
+double volume_size(double distance) { return std::min(kS, 0.1 + (kG - 1) * distance); }
+
+TEST(TetSizeCaps, CapsOnlyTrianglesTooLargeForTheTetsBesideThem) {
+    Scene s;
+    s.triangle(0.5, 2.0);   // h = 0.4: 2.0 > 2 h, capped at 1.25 h
+    s.triangle(10.0, 2.0);  // h = S: fine
+    s.triangle(0.5, 0.7);   // 0.7 < 2 h: fine
+    s.triangle(-1.0, 1.5);  // h = 0.7: 1.5 > 1.4, capped
+    const std::vector<SizeSource> caps = tet_size_caps(s.mesh, s.quad, 0, kS, kG);
+    ASSERT_EQ(caps.size(), 2u);
+    EXPECT_NEAR(caps[0].point.y, 0.5, 1e-12);
+    EXPECT_NEAR(caps[0].point.x, 0.0, 1e-12);
+    EXPECT_NEAR(caps[0].size, kCapped * volume_size(0.5), 1e-12);
+    EXPECT_NEAR(caps[1].point.y, -1.0, 1e-12);
+    EXPECT_NEAR(caps[1].size, kCapped * volume_size(1.0), 1e-12);
+}
+
+TEST(TetSizeCaps, OnlyTrianglesFromTheFirstOneOn) {
+    Scene s;
+    s.triangle(0.5, 2.0);  // too large, but before first_triangle
+    s.triangle(0.5, 0.5);
+    EXPECT_TRUE(tet_size_caps(s.mesh, s.quad, 1, kS, kG).empty());
+    EXPECT_EQ(tet_size_caps(s.mesh, s.quad, 0, kS, kG).size(), 1u);
+}
+
+TEST(TetSizeCaps, TheGradationSetsTheVolumeSize) {
+    Scene s;
+    s.triangle(1.0, 1.5);  // G 1.6: h 0.7, capped; G 2: h 1.1, fine
+    EXPECT_EQ(tet_size_caps(s.mesh, s.quad, 0, kS, 1.6).size(), 1u);
+    EXPECT_TRUE(tet_size_caps(s.mesh, s.quad, 0, kS, 2.0).empty());
+    // Gradation 1: the front's size everywhere, so nearly every triangle is too large.
+    EXPECT_EQ(tet_size_caps(s.mesh, s.quad, 0, kS, 1.0).size(), 1u);
+}
+
+TEST(TetSizeCaps, NoQuadsNoCapsAndBadGradationIsAnError) {
+    Scene s;
+    s.triangle(0.5, 2.0);
+    EXPECT_TRUE(tet_size_caps(s.mesh, {}, 0, kS, kG).empty());
+    EXPECT_THROW(tet_size_caps(s.mesh, s.quad, 0, kS, 0.9), Error);
+}
+
+}  // namespace

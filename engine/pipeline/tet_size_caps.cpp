@@ -3,18 +3,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cmath>
+
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh {
-
-namespace {
-
-double distance(const Vec3& a, const Vec3& b) {
-    const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-}  // namespace
 
 std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const index_t> outer_quads,
                                       index_t first_triangle, double far_size, double gradation) {
@@ -30,8 +22,8 @@ std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const in
         double edges = 0;
         for (int k = 0; k < 4; ++k) {
             const Vec3 p = mesh.point(outer_quads[q + k]);
-            c.x += 0.25 * p.x, c.y += 0.25 * p.y, c.z += 0.25 * p.z;
-            edges += distance(p, mesh.point(outer_quads[q + (k + 1) % 4]));
+            c = c + 0.25 * p;
+            edges += norm(p - mesh.point(outer_quads[q + (k + 1) % 4]));
         }
         quads.push_back({c, 0.25 * edges});
     }
@@ -44,8 +36,9 @@ std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const in
     tbb::parallel_for(index_t{0}, n, [&](index_t i) {
         const index_t* t = &tris.nodes[3 * (first_triangle + i)];
         const Vec3 a = mesh.point(t[0]), b = mesh.point(t[1]), c = mesh.point(t[2]);
-        const Vec3 m{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
-        const double mean_edge = (distance(a, b) + distance(b, c) + distance(c, a)) / 3;
+        const Vec3 sum = a + b + c;
+        const Vec3 m{sum.x / 3, sum.y / 3, sum.z / 3};
+        const double mean_edge = (norm(a - b) + norm(b - c) + norm(c - a)) / 3;
         if (volume.below(m, mean_edge / kTooLarge)) {
             cap[i] = kCapped * volume.at(m);
             centroid[i] = m;

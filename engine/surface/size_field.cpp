@@ -5,17 +5,9 @@
 #include <string>
 
 #include "engine/mesh/point_index.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh {
-
-namespace {
-
-double distance(const Vec3& a, const Vec3& b) {
-    const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-}  // namespace
 
 SizeField::SizeField(const SizeFieldOptions& options, std::vector<SizeSource> sources) : options_(options) {
     if (!(options.max_size > 0) || !std::isfinite(options.max_size))
@@ -81,7 +73,7 @@ void add_polygon_sources(std::span<const Vec3> polygon, std::vector<SizeSource>&
     for (std::size_t k = 0; k < n; ++k) {
         const Vec3& prev = polygon[(k + n - 1) % n];
         const Vec3& next = polygon[(k + 1) % n];
-        out.push_back({polygon[k], 0.5 * (distance(prev, polygon[k]) + distance(polygon[k], next))});
+        out.push_back({polygon[k], 0.5 * (norm(prev - polygon[k]) + norm(polygon[k] - next))});
     }
 }
 

@@ -80,8 +80,11 @@ const CaseFigures& close_pipes_figures(double gap, double height) {
     }
     return figures("close pipes " + std::to_string(gap) + " apart at " + std::to_string(height), s);
 }
-// Close enough that the normal criteria reject fronts between the rings.
-constexpr double kCloseGap = 0.6, kCloseHeight = 0.35;
+// Close enough that the normal criteria reject fronts between the rings and over the face
+// (38 here). At 0.6 apart and 0.35 high the only fronts rejected were the rings' end quads,
+// whose ideal apex was too close to the host; since those get an apex placed for the wedge
+// there (engine/pyramids/wedge.hpp), none is.
+constexpr double kCloseGap = 0.5, kCloseHeight = 0.3;
 
 std::string preset_test_name(const ::testing::TestParamInfo<std::string>& info) { return param_name(info.param); }
 std::string seed_test_name(const ::testing::TestParamInfo<int>& info) { return "seed" + std::to_string(info.param); }

@@ -65,7 +65,7 @@ TEST(PyramidBatches, NoTwoNeighboursShareABatchAndEveryFrontHasOne) {
     box.lines[2] = scene::spaced(0, 40 * 1.5 * a, 20);
     const scene::RingScene s =
         scene::build_ring_scene(box, {scene::straight_ring(3, 3, 0, 40 * 1.5 * a, 40, 1.0, 0.5)});
-    const std::vector<Front> fronts = make_fronts(s.mesh, s.front_quads, PyramidOptions{});
+    const std::vector<Front> fronts = make_fronts(s.mesh, s.front_quads, s.boundary_triangles, PyramidOptions{});
     const Adjacency nbr = front_neighbours(fronts);
     for (index_t i = 0; i < fronts.size(); ++i)
         for (index_t j : nbr.row(i)) {

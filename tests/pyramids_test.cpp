@@ -441,11 +441,13 @@ struct LeaningHost {
     std::vector<index_t> quad, tris;
     index_t region;
     Vec3 out;  // the host's unit normal, out of the region
-    explicit LeaningHost(double degrees) {
+    // `length`: the quad's side across the host edge (y from 1 - length to 1).
+    explicit LeaningHost(double degrees, double length = 1) {
         const double a = degrees * std::numbers::pi / 180;
         const Vec3 up{0, -std::cos(a), std::sin(a)};  // in the host, away from the edge
         out = {0, std::sin(a), std::cos(a)};
-        quad = {m.add_point(0, 0, 0), m.add_point(1, 0, 0), m.add_point(1, 1, 0), m.add_point(0, 1, 0)};
+        quad = {m.add_point(0, 1 - length, 0), m.add_point(1, 1 - length, 0), m.add_point(1, 1, 0),
+                m.add_point(0, 1, 0)};
         auto along = [&](double x, double s) { return m.add_point(x + s * up.x, 1 + s * up.y, s * up.z); };
         const index_t e0 = along(-3, 0), e1 = along(4, 0), t0 = along(-3, 3), tm = along(0.5, 3), t1 = along(4, 3);
         const index_t q2 = quad[2], q3 = quad[3];
@@ -460,10 +462,14 @@ struct LeaningHost {
 };
 
 TEST(Pyramids, HostLeaningOverAnEndQuadMovesTheTryNodeOffIt) {
+    // The paper's candidates: at 72 degrees an apex placed for the wedge would serve first
+    // (EndQuadOpensTheWedgeAtItsHost).
+    PyramidOptions paper;
+    paper.wedge_degrees = 0;
     for (const double degrees : {72.0, 60.0}) {
         SCOPED_TRACE(degrees);
         LeaningHost u(degrees);
-        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region});
+        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region}, paper);
         ASSERT_EQ(u.m.cell_count(CellKind::Pyramid), 1u);
         // The ideal node and the five try nodes on the normal line were refused by the host.
         EXPECT_GE(r.stats.verdicts[static_cast<int>(Verdict::TooCloseToFace)], 6u);
@@ -476,6 +482,61 @@ TEST(Pyramids, HostLeaningOverAnEndQuadMovesTheTryNodeOffIt) {
         const double margin = 0.65 * std::pow(0.9, 5);
         EXPECT_GE(-dot(apex - Vec3{0, 1, 0}, u.out), margin);
         EXPECT_GE(apex.z, margin);
+    }
+}
+
+// The wedge between the pyramid's lateral face over the host edge y = 1 and the host, in
+// degrees: the tet that fills it has this dihedral angle at that edge.
+double host_wedge(const LeaningHost& u) {
+    const Vec3 apex = u.m.point(u.m.cell(CellKind::Pyramid, 0)[4]);
+    const Vec3 host = cross(Vec3{1, 0, 0}, u.out);  // in the host, away from the edge
+    const Vec3 face{0, apex.y - 1, apex.z};         // in the lateral face, away from the edge
+    return std::acos(dot(host, face) / norm(face)) * 180 / std::numbers::pi;
+}
+
+// A ring's last-station quad (1.5 long across the host edge, 1 wide, as the default rings'
+// are) under a host met square: the paper's candidates leave 34 degrees there (its first try
+// node, 0.9 · 0.98154 h over M, h = 1.25), a tet of collapse near 0.29 at best; the lowered,
+// shifted apex opens it to wedge_degrees. A host leaning away leaves the paper's apex room
+// enough, and keeps it; one leaning over the quad at 72 degrees, which left the paper's
+// candidates no room (HostLeaningOverAnEndQuadMovesTheTryNodeOffIt), finds room on the line
+// to the placed apex.
+TEST(Pyramids, EndQuadOpensTheWedgeAtItsHost) {
+    const PyramidOptions defaults;
+    PyramidOptions paper;
+    paper.wedge_degrees = 0;
+    {
+        LeaningHost u(90, 1.5);
+        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region}, paper);
+        EXPECT_EQ(r.stats.wedge_fronts, 0u);
+        // The ideal node is too close to the host (0.75 < 0.65 h); the first try node serves.
+        EXPECT_EQ(r.stats.try_node[0], 1u);
+        EXPECT_NEAR(host_wedge(u), std::atan(0.75 / (0.9 * 0.98154 * 1.25)) * 180 / std::numbers::pi, 1e-9);
+    }
+    {
+        LeaningHost u(90, 1.5);
+        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region}, defaults);
+        EXPECT_EQ(r.stats.wedge_fronts, 1u);
+        EXPECT_EQ(r.stats.ideal, 1u);
+        EXPECT_NEAR(host_wedge(u), defaults.wedge_degrees, 1e-9);
+        const Vec3 apex = u.m.point(u.m.cell(CellKind::Pyramid, 0)[4]);
+        EXPECT_NEAR(apex.z, defaults.wedge_height_factor * 1.25, 1e-12);
+        EXPECT_NEAR(apex.x, 0.5, 1e-12);  // shifted across the edge only
+        EXPECT_GE(pyramid_quality(u.m)[0], 0.6);
+    }
+    {
+        LeaningHost u(120, 1.5);
+        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region}, defaults);
+        EXPECT_EQ(r.stats.wedge_fronts, 0u);
+        EXPECT_GT(host_wedge(u), defaults.wedge_degrees);
+    }
+    {
+        LeaningHost u(72);
+        const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region}, defaults);
+        EXPECT_EQ(r.stats.wedge_fronts, 1u);
+        EXPECT_EQ(r.stats.moved_try_nodes, 0u);
+        EXPECT_EQ(r.stats.drawback_rounds, 0u);
+        EXPECT_GE(pyramid_quality(u.m)[0], 0.45);
     }
 }
 
@@ -542,6 +603,9 @@ TEST(Pyramids, MalformedInputIsRefused) {
     flat[2] = flat[1];
     flat[3] = flat[0];
     EXPECT_THROW(build_pyramids(s.mesh, {flat, s.boundary_triangles, {}, s.pyramid_region}), Error);
+    PyramidOptions wide;
+    wide.wedge_degrees = 90;
+    EXPECT_THROW(build_pyramids(s.mesh, {s.front_quads, s.boundary_triangles, {}, s.pyramid_region}, wide), Error);
     EXPECT_EQ(s.mesh.cell_count(CellKind::Pyramid), 0u);
 }
 

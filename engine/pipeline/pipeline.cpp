@@ -180,6 +180,7 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
                 {"ideal apex", double(s.ideal)},
                 {"existing apex", double(s.existing + s.existing_relaxed)},
                 {"try-node apex", double(try_nodes)},
+                {"wedge fronts", double(s.wedge_fronts)},
                 {"drawbacks", double(s.drawback_rounds)},
                 {"front triangles", double(out.tet_front.size() / 3)}};
     progress.finish();

@@ -80,9 +80,12 @@ void check_input(const HybridMesh& mesh, const PyramidInput& in, const PyramidOp
         throw Error("pyramids: more than 500 million fronts or 2 billion boundary triangles");
     if (!(opt.height_factor > 0) || !(opt.search_radius_factor >= 0) || !(opt.max_angle_degrees > 0) ||
         !(opt.distance_factor >= 0) || !(opt.relax_rate > 0 && opt.relax_rate <= 1) || opt.try_nodes < 0 ||
-        opt.try_nodes > 8 || opt.max_drawback_rounds < 0 || !(opt.min_quality_ratio >= 0))
+        opt.try_nodes > 8 || opt.max_drawback_rounds < 0 || !(opt.min_quality_ratio >= 0) ||
+        !(opt.wedge_degrees >= 0 && opt.wedge_degrees < 90) || !(opt.wedge_height_factor > 0) ||
+        !(opt.wedge_max_shift >= 0 && opt.wedge_max_shift < 0.5))
         throw Error(
             "pyramids: options out of range (height_factor > 0, relax_rate in (0, 1], try_nodes in 0..8, "
+            "wedge_degrees in [0, 90), wedge_height_factor > 0, wedge_max_shift in [0, 0.5), "
             "factors and rounds not negative)");
     check_fronts_distinct(in.front_quads);
 }
@@ -112,7 +115,7 @@ std::vector<Box> fixed_face_boxes(const HybridMesh& mesh, const PyramidInput& in
 // Appends the used apexes (creation order) and the pyramids (front order) to the mesh and
 // lists the free triangles (reversed: out of the tet region).
 void append_to_mesh(HybridMesh& mesh, std::span<const Front> fronts, const FrontState& state,
-                    std::size_t boundary_count, index_t region, PyramidResult& result) {
+                    std::size_t boundary_count, index_t region, const PyramidOptions& opt, PyramidResult& result) {
     const index_t base = state.mesh_points();
     std::vector<index_t> renumber(state.apexes().size(), kNoIndex);
     result.first_apex = mesh.point_count();
@@ -133,6 +136,7 @@ void append_to_mesh(HybridMesh& mesh, std::span<const Front> fronts, const Front
         const std::array<index_t, 5> nodes{q[0], q[1], q[2], q[3], final_id(state.apex(i))};
         mesh.add_cell(CellKind::Pyramid, nodes, region);
         const std::uint8_t how = state.how(i);
+        if (opens_wedge(fronts[i], opt)) ++s.wedge_fronts;
         if (how == kHowIdeal)
             ++s.ideal;
         else if (how == kHowExisting)
@@ -171,7 +175,7 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     result.first_pyramid = mesh.cell_count(CellKind::Pyramid);
     if (result.stats.fronts == 0) return result;
 
-    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, opt);
+    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt);
     const Adjacency neighbours = front_neighbours(fronts);
     const std::vector<Box> boxes = fixed_face_boxes(mesh, in);
     const FaceTree face_tree(boxes);
@@ -186,7 +190,7 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     result.stats.verdicts = advance.tally().verdicts;
     if (result.stats.batches > 0) result.stats.batch_mean /= result.stats.batches;
 
-    append_to_mesh(mesh, fronts, state, in.boundary_triangles.size() / 3, in.region, result);
+    append_to_mesh(mesh, fronts, state, in.boundary_triangles.size() / 3, in.region, opt, result);
     return result;
 }
 

@@ -12,8 +12,9 @@
 //
 // Added to the paper, each for a reason given where it is implemented: a quality floor
 // (options below), a refusal of existing apexes that would make the front non-manifold
-// (front_link.hpp), a precise reading of the edge-distance criterion (criteria.hpp), and try
-// nodes moved off the faces they are too close to, tried last (candidates.hpp).
+// (front_link.hpp), a precise reading of the edge-distance criterion (criteria.hpp), try
+// nodes moved off the faces they are too close to, tried last (candidates.hpp), and a lower,
+// shifted ideal apex for quads with an edge on a boundary face (wedge.hpp).
 //
 // Fronts whose search spheres do not overlap cannot see each other's work, so they are
 // evaluated in parallel in conflict-free batches (batches.hpp) and committed in a fixed
@@ -60,6 +61,19 @@ struct PyramidOptions {
     double search_radius_factor = 1.5;
     // Largest angle between MN and the front normal n (§4 Step 4).
     double max_angle_degrees = 45.0;
+    // Not in the paper: a front with an edge on a boundary face (a ring's last-station quad,
+    // on the host) whose paper apex leaves a wedge narrower than wedge_degrees between its
+    // lateral face over that edge and the boundary triangle there gets its ideal apex at
+    // wedge_height_factor·h, shifted along the quad away from the edge until the wedge
+    // reaches wedge_degrees, by at most wedge_max_shift of the quad's length (wedge.hpp).
+    // The tet filling that wedge has it as a dihedral angle. wedge_degrees = 0 disables it.
+    // Measured on straight pipes square to their hosts (a dam lift): the paper's candidates
+    // leave 34 degrees (tet collapse 0.29); 48 degrees at 0.8 h gives 0.36 there. At 50-52
+    // degrees some placed apexes were refused and host nodes taken again; apexes at 0.7 h
+    // took paper-ex3's oblique end pyramids below 0.45.
+    double wedge_degrees = 48.0;
+    double wedge_height_factor = 0.8;
+    double wedge_max_shift = 0.3;
     // Smallest distance, times h, from the apex to the front's faces and from the new edges
     // to the front's edges (§4 Step 4).
     double distance_factor = 0.65;
@@ -104,6 +118,7 @@ struct PyramidStats {
     index_t existing_relaxed = 0;            // an existing node, relaxed criteria
     std::array<index_t, 8> try_node{};       // try_node[k-1]: the k-th try node (relaxed)
     index_t moved_try_nodes = 0;             // of those, moved off the faces (candidates.hpp)
+    index_t wedge_fronts = 0;                // fronts whose ideal apex opens a wedge (wedge.hpp)
     index_t shared_triangles = 0;            // pyramid triangles that are a face of two pyramids
     index_t covered_boundary_triangles = 0;  // boundary triangles that became a pyramid face
     // Events over the whole run (a front rejected in two rounds counts twice).

@@ -27,6 +27,12 @@ bool try_existing(const Front& f, const Thresholds& t, std::uint8_t how, const V
     return false;
 }
 
+// The try node at Rate: Rate of the way from M to N (on the normal line but for a front
+// placed for a wedge, fronts.hpp).
+Vec3 try_node(const Front& f, double rate) {
+    return (f.centroid + rate * f.shift) + (f.height * rate) * f.normal;
+}
+
 }  // namespace
 
 Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOptions& opt, Visible& vis,
@@ -44,7 +50,7 @@ Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOp
         const int k = pass == Pass::Relaxed ? step + 1 : opt.try_nodes - step;
         const double rate = std::pow(opt.relax_rate, k);
         const Thresholds t = Thresholds::at(f, opt, rate);
-        const Vec3 node = f.centroid + (opt.height_factor * f.h * rate) * f.normal;
+        const Vec3 node = try_node(f, rate);
         const auto how = static_cast<std::uint8_t>(kHowTryBase + k - 1);
         if (try_candidate(f, {kNoIndex, node}, t, how, vis, world.state, tally, choice)) return choice;
         if (try_existing(f, t, kHowExistingRelaxed, vis, world.state, tally, choice)) return choice;
@@ -58,7 +64,7 @@ Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOp
     for (int k = 1; k <= opt.try_nodes; ++k) {
         const double rate = std::pow(opt.relax_rate, k);
         const Thresholds t = Thresholds::at(f, opt, rate);
-        Vec3 node = f.centroid + (opt.height_factor * f.h * rate) * f.normal;
+        Vec3 node = try_node(f, rate);
         if (!move_off_faces(f, t, vis, node)) continue;
         const auto how = static_cast<std::uint8_t>(kHowMovedTryBase + k - 1);
         if (try_candidate(f, {kNoIndex, node}, t, how, vis, world.state, tally, choice)) return choice;

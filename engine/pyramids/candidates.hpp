@@ -4,8 +4,9 @@
 //  * normal pass (§4 Step 4): the ideal node N, then the existing front nodes within the
 //    candidate radius of N, nearest first;
 //  * relaxed pass (§4 Step 8), for fronts the normal pass rejected: for k = 1..try_nodes,
-//    the k-th try node M + height_factor·h·Rate·n, then the existing nodes, all judged at
-//    Rate = relax_rate^k. The try nodes step down the normal line from N, where the usual
+//    the k-th try node M + Rate·(N − M) (M + height_factor·h·Rate·n but for a front placed
+//    for a wedge, fronts.hpp), then the existing nodes, all judged at Rate = relax_rate^k.
+//    The try nodes step down the line from N, where the usual
 //    obstacle (a face or a neighbour's pyramid above the front) leaves more room, and their
 //    height shrinks with the distance threshold so the two stay in proportion;
 //  * squeezed pass, for fronts the relaxed pass rejected and a drawback has freed: the

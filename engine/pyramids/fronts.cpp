@@ -7,6 +7,7 @@
 #include <nanoflann.hpp>
 #include <string>
 
+#include "engine/pyramids/wedge.hpp"
 #include "engine/quality/quality.hpp"
 
 namespace tubemesh::pyramids {
@@ -17,7 +18,8 @@ std::string where(const Vec3& p) {
     return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
 }
 
-Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const PyramidOptions& opt) {
+Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const BoundaryEdges& boundary,
+                 const PyramidOptions& opt) {
     Front f;
     for (int k = 0; k < 4; ++k) {
         f.node[k] = q[k];
@@ -35,17 +37,31 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
         throw Error("pyramids: front quad " + std::to_string(index) + " near " + where(f.centroid) +
                     " is degenerate (zero area); the ring's outer quads must be proper quadrilaterals");
     f.normal = (1.0 / length) * area;
-    f.ideal = f.centroid + (opt.height_factor * f.h) * f.normal;
+    f.height = opt.height_factor * f.h;
+    f.shift = {0, 0, 0};
+    f.ideal = f.centroid + f.height * f.normal;
+    const double ideal_quality = pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], f.ideal});
+    f.quality_floor = std::min(opt.min_quality, opt.min_quality_ratio * ideal_quality);
+    // An apex placed for a wedge may not score below min_quality, nor below the paper's apex
+    // where that scores less (an elongated quad): the pyramid would become the mesh's worst
+    // element instead of the tet.
+    const ApexPlacement apex = place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt);
+    const Vec3 placed = (f.centroid + apex.shift) + apex.height * f.normal;
+    if (apex.wedge && pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], placed}) >=
+                          std::min(opt.min_quality, ideal_quality)) {
+        f.shift = apex.shift;
+        f.height = apex.height;
+        f.ideal = placed;
+    }
     f.candidate_radius = opt.search_radius_factor * f.h;
-    // Try nodes lie between M and N, at most height_factor·h·(1 - Rate_K) from N.
+    // Try nodes lie between M and N, at most |MN|·(1 - Rate_K) from N.
     const double lowest_rate = std::pow(opt.relax_rate, std::max(opt.try_nodes, 0));
-    double reach = std::max(f.candidate_radius, opt.height_factor * f.h * (1.0 - lowest_rate));
+    const double lift = opens_wedge(f, opt) ? norm(f.ideal - f.centroid) : f.height;
+    double reach = std::max(f.candidate_radius, lift * (1.0 - lowest_rate));
     for (const Vec3& p : c) reach = std::max(reach, norm(p - f.ideal));
     // A hair more than the exact bound, so that rounding in the bound itself cannot matter.
     f.reach = reach * (1.0 + 1e-9);
     f.query_radius = f.reach + opt.distance_factor * f.h * (1.0 + 1e-9);
-    const double ideal_quality = pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], f.ideal});
-    f.quality_floor = std::min(opt.min_quality, opt.min_quality_ratio * ideal_quality);
     return f;
 }
 
@@ -67,11 +83,13 @@ using IdealTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adapt
 
 }  // namespace
 
-std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads, const PyramidOptions& opt) {
+std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
+                               std::span<const index_t> boundary_triangles, const PyramidOptions& opt) {
+    const BoundaryEdges boundary(boundary_triangles);
     const std::size_t n = quads.size() / 4;
     std::vector<Front> fronts(n);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), opt);
+        fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt);
     });
     return fronts;
 }

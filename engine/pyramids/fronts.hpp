@@ -16,7 +16,7 @@ namespace tubemesh::pyramids {
 // Field order matters: a front scanning its neighbours reads their ideal apex and reach,
 // then their nodes and corners, so those come first and share as few cache lines as they can.
 struct alignas(64) Front {
-    Vec3 ideal;  // N = M + height_factor·h·n
+    Vec3 ideal;  // N = M + shift + height·n
     // Every pyramid this front may build (base corners, any candidate or try node) lies in
     // the ball of this radius around N.
     double reach;
@@ -24,6 +24,11 @@ struct alignas(64) Front {
     std::array<Vec3, 4> corner;
     Vec3 centroid;  // M
     Vec3 normal;    // n, unit, into the tet region
+    // N over M: the paper's height_factor·h on the normal line, but for a front with an edge
+    // on a boundary face whose wedge there is too narrow (wedge.hpp): lower, and shifted in
+    // the quad's plane away from that edge. Try node k is M + Rate·(N − M).
+    Vec3 shift;
+    double height;
     double h;       // mean edge length
     // Existing nodes within this distance of N are candidates.
     double candidate_radius;
@@ -36,8 +41,15 @@ struct alignas(64) Front {
     double quality_floor;
 };
 
+// The front's N is not the paper's: it was placed to open a wedge (wedge.hpp).
+inline bool opens_wedge(const Front& f, const PyramidOptions& opt) {
+    return f.shift.x != 0 || f.shift.y != 0 || f.shift.z != 0 || f.height != opt.height_factor * f.h;
+}
+
 // Throws tubemesh::Error for a degenerate quad (zero area or zero edge length).
-std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads, const PyramidOptions& opt);
+// boundary_triangles (3 ids each) tell which quad edges lie on a boundary face.
+std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
+                               std::span<const index_t> boundary_triangles, const PyramidOptions& opt);
 
 // Compressed rows: row i is items[offset[i] .. offset[i+1]).
 struct Adjacency {

@@ -55,6 +55,11 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
     out.phases.push_back(std::move(r));
 }
 
+// The tet step's far size: the option when given, else S.
+double tet_far_size(const PipelineInput& in, const MeshOptions& opt) {
+    return opt.tets.far_size > 0 ? opt.tets.far_size : in.geometry.size;
+}
+
 // The faces a tube's hex ring covers (its wall faces): they get no triangles.
 std::unordered_set<index_t> tube_wall_faces(const DiscreteGeometry& g) {
     std::unordered_set<index_t> walls;
@@ -130,7 +135,7 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
         HybridMesh trial = out.mesh;
         pass = mesh_faces(in, opt, out.sweep, out.surface_size_caps, trial);
         const std::vector<SizeSource> caps =
-            tet_size_caps(trial, out.sweep.outer_quads, first_triangle, in.geometry.size, opt.tets.gradation);
+            tet_size_caps(trial, out.sweep.outer_quads, first_triangle, tet_far_size(in, opt), opt.tets.gradation);
         if (caps.empty() || k == kSurfacePasses) {
             out.mesh = std::move(trial);
             break;
@@ -191,7 +196,7 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
     const auto t0 = Clock::now();
     PhaseProgress progress(opt.progress, "tets", 3);  // recovery, refinement, optimisation
     tets::TetStepOptions to = opt.tets;
-    if (to.far_size <= 0) to.far_size = in.geometry.size;
+    to.far_size = tet_far_size(in, opt);
     to.threads = opt.threads > 0 ? static_cast<unsigned>(opt.threads) : 0;
     to.part_done = [&progress] { progress.advance(); };
     out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), to);

@@ -1,11 +1,12 @@
-// tet_size_caps (engine/pipeline/tet_size_caps.hpp) on hand-made meshes: one ring outer quad
+// TetSizeCaps (engine/pipeline/tet_size_caps.hpp) on hand-made meshes: one ring outer quad
 // and surface triangles at known distances, measured against the volume size computed here
-// from its definition, h(x) = min(S, q + (G - 1)|x - c|) for the quad's centroid c and mean
-// edge q.
+// from its definition, h(x) = min(S, q + max(G - 1, g)|x - c|) for the quad's centroid c and
+// mean edge q.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "engine/pipeline/tet_size_caps.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 
 using namespace tubemesh;
 
-constexpr double kS = 3.0, kG = 1.6;
+constexpr double kS = 3.0, kG = 1.6, kGrowth = 0.25;
 
 // A 0.1 x 0.1 outer quad in the plane z = 0 with its centroid at the origin: q = 0.1.
 struct Scene {
@@ -31,7 +32,7 @@ struct Scene {
         const double r = a / std::sqrt(3.0);  // circumradius
         std::array<index_t, 3> t{};
         for (int k = 0; k < 3; ++k) {
-            const double phi = 2 * M_PI * k / 3;
+            const double phi = 2 * std::numbers::pi * k / 3;
             t[k] = mesh.add_point(r * std::cos(phi), y, r * std::sin(phi));
         }
         mesh.add_face(FaceKind::Tri, t, group);
@@ -40,43 +41,56 @@ struct Scene {
 
 double volume_size(double distance) { return std::min(kS, 0.1 + (kG - 1) * distance); }
 
+std::vector<SizeSource> caps(const Scene& s, index_t first, double gradation = kG,
+                             std::span<const index_t> quads = {}) {
+    return TetSizeCaps(s.mesh, quads.empty() ? std::span<const index_t>(s.quad) : quads, kS, gradation, kGrowth)
+        .caps(s.mesh, first);
+}
+
 TEST(TetSizeCaps, CapsOnlyTrianglesTooLargeForTheTetsBesideThem) {
     Scene s;
     s.triangle(0.5, 2.0);   // h = 0.4: 2.0 > 2 h, capped at 1.25 h
     s.triangle(10.0, 2.0);  // h = S: fine
     s.triangle(0.5, 0.7);   // 0.7 < 2 h: fine
     s.triangle(-1.0, 1.5);  // h = 0.7: 1.5 > 1.4, capped
-    const std::vector<SizeSource> caps = tet_size_caps(s.mesh, s.quad, 0, kS, kG);
-    ASSERT_EQ(caps.size(), 2u);
-    EXPECT_NEAR(caps[0].point.y, 0.5, 1e-12);
-    EXPECT_NEAR(caps[0].point.x, 0.0, 1e-12);
-    EXPECT_NEAR(caps[0].size, kCapped * volume_size(0.5), 1e-12);
-    EXPECT_NEAR(caps[1].point.y, -1.0, 1e-12);
-    EXPECT_NEAR(caps[1].size, kCapped * volume_size(1.0), 1e-12);
+    const std::vector<SizeSource> c = caps(s, 0);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_NEAR(c[0].point.y, 0.5, 1e-12);
+    EXPECT_NEAR(c[0].point.x, 0.0, 1e-12);
+    EXPECT_NEAR(c[0].size, kCapped * volume_size(0.5), 1e-12);
+    EXPECT_NEAR(c[1].point.y, -1.0, 1e-12);
+    EXPECT_NEAR(c[1].size, kCapped * volume_size(1.0), 1e-12);
 }
 
 TEST(TetSizeCaps, OnlyTrianglesFromTheFirstOneOn) {
     Scene s;
     s.triangle(0.5, 2.0);  // too large, but before first_triangle
     s.triangle(0.5, 0.5);
-    EXPECT_TRUE(tet_size_caps(s.mesh, s.quad, 1, kS, kG).empty());
-    EXPECT_EQ(tet_size_caps(s.mesh, s.quad, 0, kS, kG).size(), 1u);
+    EXPECT_TRUE(caps(s, 1).empty());
+    EXPECT_EQ(caps(s, 0).size(), 1u);
 }
 
 TEST(TetSizeCaps, TheGradationSetsTheVolumeSize) {
     Scene s;
     s.triangle(1.0, 1.5);  // G 1.6: h 0.7, capped; G 2: h 1.1, fine
-    EXPECT_EQ(tet_size_caps(s.mesh, s.quad, 0, kS, 1.6).size(), 1u);
-    EXPECT_TRUE(tet_size_caps(s.mesh, s.quad, 0, kS, 2.0).empty());
-    // Gradation 1: the front's size everywhere, so nearly every triangle is too large.
-    EXPECT_EQ(tet_size_caps(s.mesh, s.quad, 0, kS, 1.0).size(), 1u);
+    EXPECT_EQ(caps(s, 0, 1.6).size(), 1u);
+    EXPECT_TRUE(caps(s, 0, 2.0).empty());
+    // Below 1 + g the surface's own growth g bounds the volume size's: at G 1 the quad asks for
+    // 0.1 + 0.25 d, not 0.1 everywhere (which would cap every triangle of a block).
+    Scene far;
+    far.triangle(2.0, 1.0);  // h = 0.6 at G 1 (0.1 + 0.25 · 2): 1.0 < 1.2, fine
+    far.triangle(1.0, 1.0);  // h = 0.35: capped
+    const std::vector<SizeSource> c = caps(far, 0, 1.0);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_NEAR(c[0].size, kCapped * (0.1 + kGrowth * 1.0), 1e-12);
 }
 
-TEST(TetSizeCaps, NoQuadsNoCapsAndBadGradationIsAnError) {
+TEST(TetSizeCaps, NoQuadsNoCapsAndBadOptionsAreErrors) {
     Scene s;
     s.triangle(0.5, 2.0);
-    EXPECT_TRUE(tet_size_caps(s.mesh, {}, 0, kS, kG).empty());
-    EXPECT_THROW(tet_size_caps(s.mesh, s.quad, 0, kS, 0.9), Error);
+    EXPECT_TRUE(TetSizeCaps(s.mesh, {}, kS, kG, kGrowth).caps(s.mesh, 0).empty());
+    EXPECT_THROW(TetSizeCaps(s.mesh, s.quad, kS, 0.9, kGrowth), Error);
+    EXPECT_THROW(TetSizeCaps(s.mesh, s.quad, kS, kG, 0.0), Error);
 }
 
 }  // namespace

@@ -132,7 +132,7 @@ TEST(ThinRingTets, NoFlatTetWherePyramidFacesMeet) {
 // side walls triangles of about 1 there: the tets on them were caps (collapse 0.287). The
 // surface is now meshed again with caps where its triangles pass twice the tets' size
 // (engine/pipeline/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
-TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {
+geom::BlockSpec pipes_beside_walls() {
     geom::BlockSpec spec;
     spec.name = "two pipes beside the walls";
     spec.host.size = {8, 40, 3};
@@ -143,17 +143,44 @@ TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {
         pipe.points = {{0, y, 1.5}, {8, y, 1.5}};
         spec.pipes.push_back(pipe);
     }
+    return spec;
+}
+
+TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {
+    const geom::BlockSpec spec = pipes_beside_walls();
     const MeshOptions options;
     const geom::BuiltBlock block = geom::build_block(spec);
     const geom::PreparedModel prepared = geom::prepare_model(block.model, geom::prepare_options(options));
     const PipelineResult r = run_pipeline(prepared.pipeline_input(), options, Stage::Tets);
     EXPECT_FALSE(r.surface_size_caps.empty());
+    EXPECT_TRUE(r.warnings.empty());
     // The kept surface: none of its triangles too large for the tets beside them.
-    EXPECT_TRUE(tet_size_caps(r.mesh, r.sweep.outer_quads, 0, prepared.geometry.size, options.tets.gradation).empty());
+    const TetSizeCaps too_large(r.mesh, r.sweep.outer_quads, prepared.geometry.size, options.tets.gradation,
+                                options.size_growth);
+    EXPECT_TRUE(too_large.caps(r.mesh, 0).empty());
     const TetFigures f = measure_tets(spec.name, r);
     std::printf("%s", summary(f).c_str());
     expect_tets_fill_the_front(f);
     expect_tet_minimum(f);
+}
+
+// The passes that add caps give the same surface for 1 and 2 threads (the presets in
+// pipeline_test.cpp's determinism tests need no caps).
+TEST(PipesBesideWalls, CappedSurfaceIsTheSameForAnyThreadCount) {
+    const geom::BuiltBlock block = geom::build_block(pipes_beside_walls());
+    std::vector<PipelineResult> runs;
+    for (int threads : {1, 2}) {
+        MeshOptions options;
+        options.threads = threads;
+        const geom::PreparedModel prepared = geom::prepare_model(block.model, geom::prepare_options(options));
+        runs.push_back(run_pipeline(prepared.pipeline_input(), options, Stage::Surface));
+    }
+    ASSERT_FALSE(runs[0].surface_size_caps.empty());
+    EXPECT_EQ(runs[0].surface_size_caps.size(), runs[1].surface_size_caps.size());
+    EXPECT_EQ(runs[0].mesh.x, runs[1].mesh.x);
+    EXPECT_EQ(runs[0].mesh.y, runs[1].mesh.y);
+    EXPECT_EQ(runs[0].mesh.z, runs[1].mesh.z);
+    EXPECT_EQ(runs[0].mesh.block(FaceKind::Tri).nodes, runs[1].mesh.block(FaceKind::Tri).nodes);
 }
 
 // Two straight pipes square to both end walls of a 4 x 3 x 3 block, like every cooling pipe of

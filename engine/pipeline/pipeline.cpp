@@ -60,13 +60,6 @@ double tet_far_size(const PipelineInput& in, const MeshOptions& opt) {
     return opt.tets.far_size > 0 ? opt.tets.far_size : in.geometry.size;
 }
 
-// The faces a tube's hex ring covers (its wall faces): they get no triangles.
-std::unordered_set<index_t> tube_wall_faces(const DiscreteGeometry& g) {
-    std::unordered_set<index_t> walls;
-    for (const TubeData& t : g.tubes) walls.insert(t.wall_faces.begin(), t.wall_faces.end());
-    return walls;
-}
-
 // Surface passes at most (run_surface).
 constexpr int kSurfacePasses = 4;
 
@@ -128,20 +121,29 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     // still: two passes were enough on every block measured (2026-12-03: the serpentine lift,
     // lifts of 2 and 40 pipes), and the last pass is kept whatever it leaves.
     const index_t first_triangle = out.mesh.face_count(FaceKind::Tri);
+    const TetSizeCaps too_large(out.mesh, out.sweep.outer_quads, tet_far_size(in, opt), opt.tets.gradation,
+                                opt.size_growth);
     SurfacePass pass;
     int passes = 0;
+    std::size_t left = 0;  // triangles still too large after the last pass
     for (int k = 1;; ++k) {
         passes = k;
         HybridMesh trial = out.mesh;
         pass = mesh_faces(in, opt, out.sweep, out.surface_size_caps, trial);
-        const std::vector<SizeSource> caps =
-            tet_size_caps(trial, out.sweep.outer_quads, first_triangle, tet_far_size(in, opt), opt.tets.gradation);
+        const std::vector<SizeSource> caps = too_large.caps(trial, first_triangle);
         if (caps.empty() || k == kSurfacePasses) {
             out.mesh = std::move(trial);
+            left = caps.size();
             break;
         }
         out.surface_size_caps.insert(out.surface_size_caps.end(), caps.begin(), caps.end());
     }
+    if (left > 0)
+        out.warnings.push_back("surface: " + std::to_string(left) + " triangles are still more than " +
+                               std::to_string(int(kTooLarge)) + " times the tet size beside them after " +
+                               std::to_string(passes) +
+                               " passes; the tets on them may be flat (a smaller --size or a larger "
+                               "--gradation avoids it)");
 
     const surface::SurfaceMeshStats& s = pass.stats;
     PhaseReport r{"surface", seconds_since(t0), {}};
@@ -150,7 +152,8 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
                 {"interior nodes", double(s.interior_nodes)},
                 {"triangles", double(s.triangles)},
                 {"passes", double(passes)},
-                {"size caps", double(out.surface_size_caps.size())}};
+                {"size caps", double(out.surface_size_caps.size())},
+                {"too large left", double(left)}};
     progress.finish();
     out.phases.push_back(std::move(r));
 }

@@ -7,12 +7,17 @@
 
 namespace tubemesh {
 
+std::unordered_set<index_t> tube_wall_faces(const DiscreteGeometry& g) {
+    std::unordered_set<index_t> walls;
+    for (const TubeData& t : g.tubes) walls.insert(t.wall_faces.begin(), t.wall_faces.end());
+    return walls;
+}
+
 SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> rings, const MeshOptions& options,
                              std::span<const SizeSource> caps) {
     const DiscreteGeometry& g = in.geometry;
     if (!(g.size > 0)) throw Error("the overall mesh size S must be positive to mesh the surfaces");
-    std::unordered_set<index_t> walls;
-    for (const TubeData& t : g.tubes) walls.insert(t.wall_faces.begin(), t.wall_faces.end());
+    const std::unordered_set<index_t> walls = tube_wall_faces(g);
 
     SurfaceSizing out;
     out.options.max_size = g.size;

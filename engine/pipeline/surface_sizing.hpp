@@ -5,6 +5,7 @@
 // The pipeline meshes the faces with it; tests that measure the surface against the field the
 // mesher was given build it here too, so there is one recipe.
 #include <span>
+#include <unordered_set>
 #include <vector>
 
 #include "engine/geometry/tube_data.hpp"
@@ -18,6 +19,9 @@ struct SurfaceSizing {
     SizeFieldOptions options;         // max size S, growth from MeshOptions::size_growth
     std::vector<SizeSource> sources;  // ring polygons, caps, then the cut edges' short segments
 };
+
+// The faces a tube's hex ring covers (its wall faces): they get no triangles.
+std::unordered_set<index_t> tube_wall_faces(const DiscreteGeometry& g);
 
 // `rings`: the sweep's rings (their ends' outer polygons); `caps`: local sizes from
 // tet_size_caps (PipelineResult::surface_size_caps), empty on a first pass. Throws

@@ -3,18 +3,18 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh {
 
-std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const index_t> outer_quads,
-                                      index_t first_triangle, double far_size, double gradation) {
+TetSizeCaps::TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_quads, double far_size,
+                         double gradation, double surface_growth) {
     if (!(gradation >= 1.0)) throw Error("the tet gradation must be at least 1");
-    const FaceBlock& tris = mesh.block(FaceKind::Tri);
-    const index_t triangles = static_cast<index_t>(tris.nodes.size() / 3);
-    if (outer_quads.empty() || first_triangle >= triangles) return {};
-
+    if (!(surface_growth > 0) || !std::isfinite(surface_growth))
+        throw Error("the surface size growth must be positive");
+    if (outer_quads.size() < 4) return;
     std::vector<SizeSource> quads;
     quads.reserve(outer_quads.size() / 4);
     for (std::size_t q = 0; q + 3 < outer_quads.size(); q += 4) {
@@ -27,9 +27,16 @@ std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const in
         }
         quads.push_back({c, 0.25 * edges});
     }
-    // Gradation 1 means the front's size everywhere; the field needs a positive growth.
-    const SizeField volume({far_size, std::max(gradation - 1.0, 1e-9)}, std::move(quads));
+    volume_ = std::make_unique<SizeField>(SizeFieldOptions{far_size, std::max(gradation - 1.0, surface_growth)},
+                                          std::move(quads));
+}
 
+TetSizeCaps::~TetSizeCaps() = default;
+
+std::vector<SizeSource> TetSizeCaps::caps(const HybridMesh& mesh, index_t first_triangle) const {
+    const FaceBlock& tris = mesh.block(FaceKind::Tri);
+    const index_t triangles = static_cast<index_t>(tris.nodes.size() / 3);
+    if (!volume_ || first_triangle >= triangles) return {};
     const index_t n = triangles - first_triangle;
     std::vector<double> cap(n, 0.0);  // 0: the triangle is fine
     std::vector<Vec3> centroid(n);
@@ -39,8 +46,8 @@ std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const in
         const Vec3 sum = a + b + c;
         const Vec3 m{sum.x / 3, sum.y / 3, sum.z / 3};
         const double mean_edge = (norm(a - b) + norm(b - c) + norm(c - a)) / 3;
-        if (volume.below(m, mean_edge / kTooLarge)) {
-            cap[i] = kCapped * volume.at(m);
+        if (volume_->below(m, mean_edge / kTooLarge)) {
+            cap[i] = kCapped * volume_->at(m);
             centroid[i] = m;
         }
     });

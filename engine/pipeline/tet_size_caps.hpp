@@ -2,20 +2,25 @@
 // Surface triangles the tets beside them could not match, and the local sizes that fix them.
 //
 // The surface size field (surface_sizing.hpp) grades only from the rings' end polygons, on the
-// faces the tubes pass through. A face a tube runs beside — the side wall of a lift 0.75 m
-// from its outer pipe, the top and bottom 1.5 m above the pipes — gets S there. The tet
-// step's control space (engine/tets/control_space.hpp) grades from the rings' outer quads
-// instead: near a pipe it asks for h_q + (G - 1)·d. Where a face sits at a distance d with
-// h_q + (G - 1)·d well under S, each of its triangles is the base of caps: a 40-pipe lift at
-// S 2.53 had wall triangles of 2.5 m against tets of 0.5 m, and its worst tet (collapse 0.226)
-// was such a cap that no flip, move or new point could lift.
+// faces the tubes pass through. A face a tube runs beside — the side wall of a lift 0.5-0.75 m
+// from its outer pipe, the top and bottom 1.5 m above the pipes — gets S there. The tet step
+// grades its interior points from the whole front (engine/tets/control_space.hpp: the nearest
+// front nodes' sizes, growing by G - 1 per unit distance), so between such a face and the
+// pipe it asks for sizes near the pipe's, h_q + (G - 1)·d, well under S: each of the face's
+// large triangles is then the base of caps. A 40-pipe lift at S 2.53 had wall triangles of
+// 2.5 m against tets of 0.5 m, and its worst tet (collapse 0.226) was such a cap that no flip,
+// move or new point could lift.
 //
-// tet_size_caps measures every surface triangle against that volume size, computed the same
-// way (a SizeField with growth G - 1 and one source per outer quad: its centroid, its mean
-// edge). A triangle whose mean edge exceeds kTooLarge times it yields a source asking for
-// kCapped times it at the triangle's centroid. Those sources go into the surface field with
-// its own growth (0.25), so the surface's neighbour ratio bound of 1.5 is unchanged, and the
-// faces are meshed again (pipeline.cpp).
+// TetSizeCaps models the size the pipes alone ask for: a SizeField with one source per ring
+// outer quad (its centroid, its mean edge), growth max(G - 1, g) with g the surface field's
+// own growth. (Not the control space itself: that also takes the surface's nodes, which is
+// what hides the pipe from a large triangle. The floor g keeps a small G from capping every
+// triangle of a block: the surface cannot grade slower than g anyway.) A triangle whose mean
+// edge exceeds kTooLarge times that size at its centroid yields a source asking for kCapped
+// times it there. Those sources go into the surface field with its own growth g, so the
+// surface's neighbour ratio bound of 1.5 is unchanged, and the faces are meshed again
+// (pipeline.cpp).
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -35,11 +40,24 @@ inline constexpr double kTooLarge = 2.0;
 // walls kept 4 triangles at 2.07 h through six passes.
 inline constexpr double kCapped = 1.25;
 
-// Sources for the surface triangles [first_triangle, end) of mesh's triangle block that are
-// too large for the tets the control space would put beside them. `outer_quads`: 4 node ids per
-// ring outer quad (SweepResult::outer_quads); `far_size` S; `gradation` the tet step's G (>= 1).
-// Empty when nothing is too large or there are no quads. Deterministic (triangle order).
-std::vector<SizeSource> tet_size_caps(const HybridMesh& mesh, std::span<const index_t> outer_quads,
-                                      index_t first_triangle, double far_size, double gradation);
+class TetSizeCaps {
+public:
+    // `outer_quads`: 4 node ids per ring outer quad (SweepResult::outer_quads); `far_size` S;
+    // `gradation` the tet step's G (>= 1); `surface_growth` g (> 0). Throws tubemesh::Error
+    // for a G below 1 or a g not positive.
+    TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_quads, double far_size, double gradation,
+                double surface_growth);
+    ~TetSizeCaps();
+    TetSizeCaps(const TetSizeCaps&) = delete;
+    TetSizeCaps& operator=(const TetSizeCaps&) = delete;
+
+    // Sources for the triangles [first_triangle, end) of mesh's triangle block that are too
+    // large for the tets beside them; empty when none is or there are no quads. Deterministic
+    // (triangle order), parallel.
+    std::vector<SizeSource> caps(const HybridMesh& mesh, index_t first_triangle) const;
+
+private:
+    std::unique_ptr<SizeField> volume_;  // null without quads
+};
 
 }  // namespace tubemesh

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/mesh/edge_key.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/pyramids/contacts.hpp"
 #include "engine/pyramids/front_link.hpp"
@@ -130,11 +131,8 @@ constexpr int kFanEdges = 96;
 struct ApexFan {
     int count = 0;
     std::array<std::uint64_t, kFanEdges> key;
-    static std::uint64_t of(index_t a, index_t b) {
-        return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
-    }
     bool has(index_t a, index_t b) const {
-        const std::uint64_t k = of(a, b);
+        const std::uint64_t k = edge_key(a, b);
         for (int i = 0; i < count; ++i)
             if (key[i] == k) return true;
         return false;
@@ -147,7 +145,7 @@ void collect_fan(index_t apex, const Visible& vis, ApexFan& fan) {
         if (!face.has(apex)) continue;
         for (int k = 0; k < face.size; ++k) {
             if (fan.count == kFanEdges) return;
-            fan.key[fan.count++] = ApexFan::of(face.node[k], face.node[(k + 1) % face.size]);
+            fan.key[fan.count++] = edge_key(face.node[k], face.node[(k + 1) % face.size]);
         }
     }
 }

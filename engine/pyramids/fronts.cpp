@@ -85,7 +85,8 @@ using IdealTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adapt
 
 std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
                                std::span<const index_t> boundary_triangles, const PyramidOptions& opt) {
-    const BoundaryEdges boundary(boundary_triangles);
+    // Without wedge placement nobody asks which quad edges lie on a boundary triangle.
+    const BoundaryEdges boundary(opt.wedge_degrees > 0 ? boundary_triangles : std::span<const index_t>{});
     const std::size_t n = quads.size() / 4;
     std::vector<Front> fronts(n);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {

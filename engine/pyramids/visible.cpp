@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/mesh/edge_key.hpp"
+
 namespace tubemesh::pyramids {
 
 namespace {
@@ -87,7 +89,7 @@ void collect_edges(Visible& out) {
         if (face.at_base) out.base_ring.insert(out.base_ring.end(), face.node.begin(), face.node.begin() + face.size);
         for (int k = 0; k < face.size; ++k) {
             const index_t u = face.node[k], v = face.node[(k + 1) % face.size];
-            const std::uint64_t key = u < v ? (std::uint64_t{u} << 32 | v) : (std::uint64_t{v} << 32 | u);
+            const std::uint64_t key = edge_key(u, v);
             out.edge_keys.push_back({key, static_cast<index_t>(4 * i + static_cast<std::size_t>(k))});
         }
     }

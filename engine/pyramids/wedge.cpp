@@ -4,15 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/mesh/edge_key.hpp"
 #include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh::pyramids {
 
 namespace {
-
-std::uint64_t edge_key(index_t a, index_t b) {
-    return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
-}
 
 // The part of v perpendicular to the unit vector e.
 Vec3 across(const Vec3& v, const Vec3& e) { return v - dot(v, e) * e; }

@@ -3,9 +3,10 @@
 // whose end edge lies on the host face), the tet region between the pyramid's lateral face over
 // that edge and the boundary triangle under it is a wedge with both faces fixed before the tets
 // are made: one tet fills it, and its dihedral at the edge is the wedge's angle. Over a host met
-// at a right angle the paper's apex, 0.98·h over the centroid, leaves about atan(a/2 / 0.98 h)
-// for an end quad of axial length a: 34 degrees on the default rings, which caps that tet's
-// collapse near 0.29, the worst of a whole dam lift. Such fronts get an ideal apex lowered and
+// at a right angle an apex at height H over the centroid leaves atan(a/2 / H) for an end quad
+// of axial length a. The paper's apex (H = 0.98 h, 31.5 degrees on the default rings) is too
+// close to the host for its distance rule there, so the first try node served (0.88 h, 34
+// degrees), which caps that tet's collapse near 0.29, the worst of a whole dam lift. Such fronts get an ideal apex lowered and
 // shifted along the quad away from the edge until the wedge reaches a target angle.
 #include <cstdint>
 #include <span>
@@ -41,8 +42,10 @@ struct ApexPlacement {
 // The paper's apex (no shift, height_factor·h) unless an edge of the quad lies on a boundary
 // triangle and leaves a wedge narrower than opt.wedge_degrees under the paper's lateral face;
 // then the apex at opt.wedge_height_factor·h, shifted away from that edge just enough to open
-// the wedge to opt.wedge_degrees, at most opt.wedge_max_shift of the quad's length. The caller
-// judges the placed pyramid's quality (fronts.cpp).
+// the wedge to opt.wedge_degrees, at most opt.wedge_max_shift of the quad's length. Each such
+// edge adds its shift: a quad with boundary triangles on two opposite edges (a tube one
+// station long) gets shifts that cancel, and its wedges stay as the lowered apex leaves them.
+// The caller judges the placed pyramid's quality (fronts.cpp).
 ApexPlacement place_apex(const HybridMesh& mesh, const index_t* quad, const Vec3& centroid, const Vec3& normal,
                          double h, const BoundaryEdges& boundary, const PyramidOptions& opt);
 

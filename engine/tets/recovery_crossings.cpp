@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <unordered_set>
 
+#include "engine/mesh/edge_key.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/predicates/predicates.hpp"
 
@@ -46,11 +47,6 @@ bool on_open_segment(const double* a, const double* b, const double* w) {
     e2[(k + 2) % 3] += span;
     if (orient3d(a, b, e1, w) != 0 || orient3d(a, b, e2, w) != 0) return false;
     return (a[k] < w[k] && w[k] < b[k]) || (b[k] < w[k] && w[k] < a[k]);
-}
-
-std::uint64_t edge_key(index_t u, index_t v) {
-    if (u > v) std::swap(u, v);
-    return (std::uint64_t{u} << 32) | v;
 }
 
 }  // namespace

@@ -25,8 +25,10 @@ TetSizeCaps::TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_
             c = c + 0.25 * p;
             edges += norm(p - mesh.point(outer_quads[q + (k + 1) % 4]));
         }
-        quads.push_back({c, 0.25 * edges});
+        // A collapsed quad anchors nothing; the pyramid phase refuses it with its own message.
+        if (edges > 0) quads.push_back({c, 0.25 * edges});
     }
+    if (quads.empty()) return;
     volume_ = std::make_unique<SizeField>(SizeFieldOptions{far_size, std::max(gradation - 1.0, surface_growth)},
                                           std::move(quads));
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <nanoflann.hpp>
+#include <numbers>
 #include <string>
 
 #include "engine/pyramids/wedge.hpp"
@@ -47,8 +48,11 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     // element instead of the tet.
     const ApexPlacement apex = place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt);
     const Vec3 placed = (f.centroid + apex.shift) + apex.height * f.normal;
-    if (apex.wedge && pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], placed}) >=
-                          std::min(opt.min_quality, ideal_quality)) {
+    // Nor may MN lean past max_angle (possible with non-default wedge_* options only): every
+    // try node on the line M -> N would fail the angle test.
+    const bool upright = std::atan2(norm(apex.shift), apex.height) * 180 / std::numbers::pi < opt.max_angle_degrees;
+    if (apex.wedge && upright &&
+        pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], placed}) >= std::min(opt.min_quality, ideal_quality)) {
         f.shift = apex.shift;
         f.height = apex.height;
         f.ideal = placed;

@@ -22,6 +22,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -132,19 +133,23 @@ TEST(ThinRingTets, NoFlatTetWherePyramidFacesMeet) {
 // side walls triangles of about 1 there: the tets on them were caps (collapse 0.287). The
 // surface is now meshed again with caps where its triangles pass twice the tets' size
 // (engine/pipeline/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
-geom::BlockSpec pipes_beside_walls() {
+// A box with straight cooling pipes (diameter 0.032) along x from wall to wall, at height
+// z and at each y of `ys`.
+geom::BlockSpec straight_pipes(const std::string& name, const Vec3& box, std::initializer_list<double> ys, double z) {
     geom::BlockSpec spec;
-    spec.name = "two pipes beside the walls";
-    spec.host.size = {8, 40, 3};
-    for (double y : {0.5, 39.5}) {
+    spec.name = name;
+    spec.host.size = box;
+    for (double y : ys) {
         geom::PipeSpec pipe;
         pipe.kind = geom::PathKind::Line;
         pipe.diameter = 0.032;
-        pipe.points = {{0, y, 1.5}, {8, y, 1.5}};
+        pipe.points = {{0, y, z}, {box.x, y, z}};
         spec.pipes.push_back(pipe);
     }
     return spec;
 }
+
+geom::BlockSpec pipes_beside_walls() { return straight_pipes("two pipes beside the walls", {8, 40, 3}, {0.5, 39.5}, 1.5); }
 
 TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {
     const geom::BlockSpec spec = pipes_beside_walls();
@@ -191,16 +196,7 @@ TEST(PipesBesideWalls, CappedSurfaceIsTheSameForAnyThreadCount) {
 // The end quads' apexes are now lowered and shifted away from the host to open that wedge to
 // 48 degrees (engine/pyramids/wedge.hpp): 0.335.
 TEST(PipesSquareToEndWalls, NoWedgeTetAtTheHost) {
-    geom::BlockSpec spec;
-    spec.name = "two pipes square to the end walls";
-    spec.host.size = {4, 3, 3};
-    for (double y : {0.75, 2.25}) {
-        geom::PipeSpec pipe;
-        pipe.kind = geom::PathKind::Line;
-        pipe.diameter = 0.032;
-        pipe.points = {{0, y, 1.5}, {4, y, 1.5}};
-        spec.pipes.push_back(pipe);
-    }
+    const geom::BlockSpec spec = straight_pipes("two pipes square to the end walls", {4, 3, 3}, {0.75, 2.25}, 1.5);
     const TetFigures f = measure_tets(spec.name, spec);
     std::printf("%s", summary(f).c_str());
     expect_tets_fill_the_front(f);

@@ -68,16 +68,17 @@ struct SurfacePass {
     index_t edge_points = 0;
 };
 
-// Every face that is not a tube wall, meshed into `mesh` with the surface field plus `caps`.
+// Every face that is not a tube wall (`walls`: tube_wall_faces), meshed into `mesh` with the
+// surface field plus `caps`.
 SurfacePass mesh_faces(const PipelineInput& in, const MeshOptions& opt, const SweepResult& sweep,
-                       std::span<const SizeSource> caps, HybridMesh& mesh) {
+                       const std::unordered_set<index_t>& walls, std::span<const SizeSource> caps,
+                       HybridMesh& mesh) {
     const DiscreteGeometry& g = in.geometry;
     std::vector<index_t> tube_loop_edges;
     for (const TubeData& t : g.tubes) {
         tube_loop_edges.insert(tube_loop_edges.end(), t.loop1_edges.begin(), t.loop1_edges.end());
         tube_loop_edges.insert(tube_loop_edges.end(), t.loop2_edges.begin(), t.loop2_edges.end());
     }
-    const std::unordered_set<index_t> walls = tube_wall_faces(g);
 
     SurfaceSizing sizing = surface_sizing(in, sweep.rings, opt, caps);
     const std::vector<EdgePolyline>& edges = sizing.edges;
@@ -129,7 +130,7 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     for (int k = 1;; ++k) {
         passes = k;
         HybridMesh trial = out.mesh;
-        pass = mesh_faces(in, opt, out.sweep, out.surface_size_caps, trial);
+        pass = mesh_faces(in, opt, out.sweep, walls, out.surface_size_caps, trial);
         const std::vector<SizeSource> caps = too_large.caps(trial, first_triangle);
         if (caps.empty() || k == kSurfacePasses) {
             out.mesh = std::move(trial);

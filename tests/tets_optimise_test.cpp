@@ -547,11 +547,13 @@ TEST(test_tets_optimise, PointInsertionFillsItsCavity) {
 }
 
 // A dense front (1000 points on the sphere) over few inner points: the worst tets after the
-// passes have four front points and no flip lifts them (without new points the minimum stays
-// 0.272 on this seed). The rescue's new points lift it past 0.30, keep the domain valid, the
-// front points where they were, and give the same arrays for 1 and 2 threads.
+// passes have four front points and no flip lifts them. The rescue's new points lift the
+// minimum above what the same passes leave without it (0.282 -> 0.300 on this seed; over
+// seeds 1-12 it rises by 0 to 0.021, to 0.285-0.327), keep the domain valid, the front points
+// where they were, and give the same arrays for 1 and 2 threads.
 TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     TetDomain one = sphere_domain(1000, 200, 2), two = sphere_domain(1000, 200, 2);
+    TetDomain plain = sphere_domain(1000, 200, 2);
     const std::vector<double> front_xyz(one.xyz.begin(), one.xyz.begin() + 3 * one.front_points);
     const index_t points = one.point_count();
     const auto front = front_set(one);
@@ -561,9 +563,11 @@ TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     const OptimiseStats s = optimise(one, o);
     o.threads = 2;
     optimise(two, o);
+    o.rescue_below = 0;
+    const OptimiseStats without = optimise(plain, o);
     EXPECT_GT(s.inserted_points, 0u);
     EXPECT_EQ(one.point_count(), points + s.inserted_points);
-    EXPECT_GE(s.min_collapse_after, 0.30);
+    EXPECT_GT(s.min_collapse_after, without.min_collapse_after + 0.01);
     EXPECT_NEAR(s.min_collapse_after, min_collapse(one), 1e-15);
     expect_valid(one);
     EXPECT_EQ(boundary_faces(one), front);

@@ -5,14 +5,15 @@
 // `mean_floor` instead gets the one that most raises the mesh's mean collapse (the new tets'
 // sum minus the old ones' beyond `mean` per added tet) with every new tet at or above the floor.
 //
-// Parallel and deterministic. Planning a candidate reads only its tet, the tet's face
-// neighbours and the shells of its six edges (its reads); applying the plan writes only the
-// old tets and their face neighbours' codes. Each round plans, in parallel, every candidate
-// whose reads a flip wrote since it was last planned (a candidate with no improving flip is
-// dropped: later passes come back to it if something near it changes), then takes, in
-// worst-first order, the candidates whose reads and writes meet none taken before in the
-// round, and applies them with tbb::parallel_for, each writing its new tets into slots
-// reserved for it in that order; the others wait, keeping their plans while still valid.
+// Parallel and deterministic. Planning a candidate reads its tet, the tet's face neighbours
+// and the shells of its six edges; a plan depends only on its old tets (their vertex rows and
+// collapses), and applying it writes only the old tets and their face neighbours' codes (its
+// claims). Each round plans, in parallel, every candidate without a plan or whose plan lost an
+// old tet to a flip since (a candidate with no improving flip is dropped: later passes come
+// back to it if something near it changes), then takes, in worst-first order, the candidates
+// whose claims meet none taken before in the round, and applies them with tbb::parallel_for,
+// each writing its new tets into slots reserved for it in that order; the others wait with
+// their plans.
 #include <cstdint>
 #include <vector>
 

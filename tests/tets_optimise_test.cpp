@@ -547,10 +547,12 @@ TEST(test_tets_optimise, PointInsertionFillsItsCavity) {
 }
 
 // A dense front (1000 points on the sphere) over few inner points: the worst tets after the
-// passes have four front points and no flip lifts them. The rescue's new points lift the
-// minimum above what the same passes leave without it (0.282 -> 0.300 on this seed; over
-// seeds 1-12 it rises by 0 to 0.022, to 0.285-0.327), keep the domain valid, the front points
-// where they were, and give the same arrays for 1 and 2 threads.
+// passes have four front points and no flip lifts them. The rescue (its flips, moves and new
+// points) lifts the minimum above what the same passes leave without it: 0.282 -> 0.29999 on
+// this seed, just under issue 8's 0.30, which is checked on the pipeline's fronts (presets and
+// seeded blocks), not on this random sphere; over seeds 1-12 the rescue adds 0 to 0.022 and
+// the minima end at 0.285-0.327. It keeps the domain valid, the front points where they were,
+// and gives the same arrays for 1 and 2 threads.
 TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     TetDomain one = sphere_domain(1000, 200, 2), two = sphere_domain(1000, 200, 2);
     TetDomain plain = sphere_domain(1000, 200, 2);
@@ -568,6 +570,7 @@ TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     EXPECT_GT(s.inserted_points, 0u);
     EXPECT_EQ(one.point_count(), points + s.inserted_points);
     EXPECT_GT(s.min_collapse_after, without.min_collapse_after + 0.01);
+    EXPECT_GE(s.min_collapse_after, 0.295);
     EXPECT_NEAR(s.min_collapse_after, min_collapse(one), 1e-15);
     expect_valid(one);
     EXPECT_EQ(boundary_faces(one), front);

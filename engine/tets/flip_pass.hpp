@@ -7,13 +7,13 @@
 //
 // Parallel and deterministic. Planning a candidate reads its tet, the tet's face neighbours
 // and the shells of its six edges; a plan depends only on its old tets (their vertex rows and
-// collapses), and applying it writes only the old tets and their face neighbours' codes (its
-// claims). Each round plans, in parallel, every candidate without a plan or whose plan lost an
-// old tet to a flip since (a candidate with no improving flip is dropped: later passes come
-// back to it if something near it changes), then takes, in worst-first order, the candidates
-// whose claims meet none taken before in the round, and applies them with tbb::parallel_for,
-// each writing its new tets into slots reserved for it in that order; the others wait with
-// their plans.
+// collapses), and applying it writes only the old tets, their face neighbours' codes (the two
+// are its claims) and the spare slots reserved for it. Each round plans, in parallel, every
+// candidate without a plan or whose plan lost an old tet to a flip since (a candidate with no
+// improving flip is dropped: later passes come back to it if something near it changes), then
+// takes, in worst-first order, the candidates whose claims meet none taken before in the
+// round, and applies them with tbb::parallel_for, each writing its new tets into slots
+// reserved for it in that order; the others wait with their plans.
 #include <cstdint>
 #include <vector>
 

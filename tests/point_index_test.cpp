@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "engine/mesh/point_index.hpp"
@@ -65,6 +66,7 @@ TEST(PointIndex, RadiusMatchesBruteForceAndIsStrict) {
                    want.end());
         index.within(p, r, got);
         EXPECT_EQ(got, want);
+        EXPECT_EQ(index.any_within(p, r), !want.empty());
     }
 }
 
@@ -99,6 +101,10 @@ TEST(PointIndex, EmptyAndSmallInputs) {
     EXPECT_EQ(got[0].distance_squared, 1.0);
     one.within({0, 0, 0}, 1.0, got);  // strict: a point exactly at the radius is outside
     EXPECT_TRUE(got.empty());
+    EXPECT_FALSE(one.any_within({0, 0, 0}, 1.0));
+    EXPECT_TRUE(one.any_within({0, 0, 0}, std::nextafter(1.0, 2.0)));
+    EXPECT_FALSE(one.any_within({1, 0, 0}, 0.0));  // no radius: nothing is strictly inside
+    EXPECT_FALSE(empty.any_within({0, 0, 0}, 10.0));
 }
 
 }  // namespace

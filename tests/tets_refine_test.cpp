@@ -503,6 +503,48 @@ TEST(SelectPoints, SameAsDirectGreedy) {
     EXPECT_LT(want.size(), cand.size() / 2);
 }
 
+// GrowingPoints as the refinement uses it: points appended round after round, some rounds
+// adding few (the points go to the small tree of recent ones) and some many (everything is
+// indexed again). Every round's selection equals the direct greedy over all points so far.
+TEST(SelectPoints, GrowingPointsAnswerAsAllPointsDo) {
+    std::uint32_t seed = 11;
+    const auto uniform = [&seed](double lo, double hi) {
+        seed = seed * 1664525u + 1013904223u;
+        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
+    };
+    const auto close = [](const double* a, const double* b, double r) {
+        const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+        return dx * dx + dy * dy + dz * dz < r * r;
+    };
+    std::vector<double> all(3 * 400);
+    for (double& x : all) x = uniform(0, 1);
+    GrowingPoints points(all);
+    const double factor = 0.7;
+    // Appended before each round: none (the first round indexes all 400), 50 (a recent tree), 30
+    // (the recent tree again, now 80), 200 (over a quarter of 400: all indexed again), none (the
+    // trees as they are), 5 (a recent tree again).
+    for (const std::size_t added : {0, 50, 30, 200, 0, 5}) {
+        std::vector<double> more(3 * added);
+        for (double& x : more) x = uniform(0, 1);
+        points.append(more);
+        all.insert(all.end(), more.begin(), more.end());
+        ASSERT_EQ(points.size(), all.size() / 3);
+        std::vector<Candidate> cand(1500);
+        for (Candidate& c : cand) c = {{uniform(0, 1), uniform(0, 1), uniform(0, 1)}, uniform(0.05, 0.15), 0};
+        std::vector<index_t> want;
+        for (std::size_t i = 0; i < cand.size(); ++i) {
+            const double r = factor * cand[i].h;
+            bool clash = false;
+            for (std::size_t j = 0; j < all.size() && !clash; j += 3) clash = close(cand[i].p, &all[j], r);
+            for (index_t j : want)
+                if (!clash) clash = close(cand[i].p, cand[j].p, r);
+            if (!clash) want.push_back(static_cast<index_t>(i));
+        }
+        EXPECT_EQ(select_points(cand, points, factor), want) << "after appending " << added;
+        EXPECT_GT(want.size(), 10u);
+    }
+}
+
 // The kernel alone: a point just inside a front face keeps that face; points outside the
 // region or on the front are skipped, never inserted.
 TEST(ConstrainedKernel, FrontFacesSurvive) {

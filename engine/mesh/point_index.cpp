@@ -21,6 +21,19 @@ struct SoaCloud {
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SoaCloud, double, index_t>,
                                                  SoaCloud, 3, index_t>;
 
+// A nanoflann result set that ends the search at the first point strictly inside the radius.
+struct FirstWithin {
+    double radius_squared;
+    bool found = false;
+    bool full() const { return true; }
+    double worstDist() const { return radius_squared; }
+    bool addPoint(double distance_squared, index_t) {
+        if (!(distance_squared < radius_squared)) return true;
+        found = true;
+        return false;  // stop searching
+    }
+};
+
 bool closer(const Neighbor& a, const Neighbor& b) {
     return a.distance_squared < b.distance_squared ||
            (a.distance_squared == b.distance_squared && a.index < b.index);
@@ -78,6 +91,14 @@ void PointIndex::within(const Vec3& query, double radius, std::vector<Neighbor>&
     out.reserve(hits.size());
     for (const auto& [i, d2] : hits) out.push_back({i, d2});
     std::sort(out.begin(), out.end(), closer);
+}
+
+bool PointIndex::any_within(const Vec3& query, double radius) const {
+    if (!(radius > 0.0) || size() == 0) return false;
+    const double q[3] = {query.x, query.y, query.z};
+    FirstWithin first{radius * radius};
+    impl_->tree.findNeighbors(first, q, nanoflann::SearchParams(32, 0.0f, false));
+    return first.found;
 }
 
 }  // namespace tubemesh

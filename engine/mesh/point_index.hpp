@@ -66,6 +66,10 @@ public:
     // All points strictly closer than `radius`, nearest first, ties by index.
     void within(const Vec3& query, double radius, std::vector<Neighbor>& out) const;
 
+    // Whether some point is strictly closer than `radius` (within() would list one): the search
+    // stops at the first such point, with no list and no allocation.
+    bool any_within(const Vec3& query, double radius) const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

@@ -264,13 +264,13 @@ public:
     void build_high() { half_[1].build(); }
 
     // No point strictly closer than `radius` to q (PointIndex::within's test).
-    bool empty_within(const Vec3& q, double radius, std::vector<Neighbor>& near) const {
+    bool empty_within(const Vec3& q, double radius) const {
         const double x = axis_ == 0 ? q.x : axis_ == 1 ? q.y : q.z;
         const int side = x < split_ ? 0 : 1;
-        if (!half_[side].empty_within(q, radius, near)) return false;
+        if (!half_[side].empty_within(q, radius)) return false;
         // A point of the other half is at least |x - split| away along the axis.
         const double gap = side == 0 ? split_ - x : x - split_;
-        return gap >= radius || half_[1 - side].empty_within(q, radius, near);
+        return gap >= radius || half_[1 - side].empty_within(q, radius);
     }
 
 private:
@@ -281,11 +281,7 @@ private:
         void build() {
             if (!x.empty()) tree.emplace(x, y, z);
         }
-        bool empty_within(const Vec3& q, double radius, std::vector<Neighbor>& near) const {
-            if (!tree) return true;
-            tree->within(q, radius, near);
-            return near.empty();
-        }
+        bool empty_within(const Vec3& q, double radius) const { return !tree || !tree->any_within(q, radius); }
     };
     std::size_t size_;
     int axis_ = 0;
@@ -295,7 +291,59 @@ private:
 
 }  // namespace
 
+struct GrowingPoints::Impl {
+    std::vector<double> all;           // every point, 3 coordinates each
+    std::size_t indexed = 0;           // points [0, indexed) are in `kept`
+    std::unique_ptr<SplitPoints> kept;
+    std::vector<double> x, y, z;       // points [indexed, in_recent)
+    std::size_t in_recent = 0;
+    std::optional<PointIndex> recent;
+
+    // Builds the trees the points appended since the last call need, `beside` at the same time.
+    template <class F>
+    void prepare(F&& beside) {
+        const std::size_t n = all.size() / 3;
+        if (!kept || 4 * (n - indexed) > indexed) {
+            kept = std::make_unique<SplitPoints>(all);
+            indexed = in_recent = n;
+            recent.reset();
+            x.clear();
+            y.clear();
+            z.clear();
+            tbb::parallel_invoke([&] { kept->build_low(); }, [&] { kept->build_high(); }, beside);
+            return;
+        }
+        if (in_recent == n) {
+            beside();
+            return;
+        }
+        recent.reset();  // it refers to x, y, z, which grow now
+        for (std::size_t i = in_recent; i < n; ++i) {
+            x.push_back(all[3 * i]);
+            y.push_back(all[3 * i + 1]);
+            z.push_back(all[3 * i + 2]);
+        }
+        in_recent = n;
+        tbb::parallel_invoke([&] { recent.emplace(x, y, z); }, beside);
+    }
+    bool empty_within(const Vec3& q, double radius) const {
+        return kept->empty_within(q, radius) && !(recent && recent->any_within(q, radius));
+    }
+};
+
+GrowingPoints::GrowingPoints(std::span<const double> xyz) : impl_(std::make_unique<Impl>()) {
+    impl_->all.assign(xyz.begin(), xyz.end());
+}
+GrowingPoints::~GrowingPoints() = default;
+void GrowingPoints::append(std::span<const double> xyz) { impl_->all.insert(impl_->all.end(), xyz.begin(), xyz.end()); }
+std::size_t GrowingPoints::size() const { return impl_->all.size() / 3; }
+
 std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor) {
+    GrowingPoints points(existing);
+    return select_points(c, points, factor);
+}
+
+std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor) {
     const std::size_t n = c.size();
     std::vector<double> cx(n), cy(n), cz(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -306,17 +354,14 @@ std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const
     std::vector<index_t> kept;
     if (!n) return kept;
     // The trees are independent and each build is serial: build them side by side.
-    SplitPoints points(existing);
+    GrowingPoints::Impl& points = *existing.impl_;
     std::optional<PointIndex> cands;
-    tbb::parallel_invoke([&] { points.build_low(); }, [&] { points.build_high(); },
-                         [&] { cands.emplace(cx, cy, cz); });
+    points.prepare([&] { cands.emplace(cx, cy, cz); });
     // Far enough from existing points: independent per candidate, parallel.
     std::vector<std::uint8_t> free_of_points(n, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-        std::vector<Neighbor> near;
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-            free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h, near) ? 1 : 0;
-        }
+        for (std::size_t i = r.begin(); i < r.end(); ++i)
+            free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h) ? 1 : 0;
     });
     // Among candidates: greedy in order, so earlier ones win whatever the thread count. The
     // queries are independent (each candidate's earlier neighbours that passed the first test),

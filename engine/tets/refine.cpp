@@ -56,7 +56,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         tri.adopt(domain.xyz, std::move(domain.tets));
         domain.tets = delaunay::TetStore();
         // Points in the mesh (inserted), for the distance test; kernel ids follow domain.xyz.
-        std::vector<double> live(domain.xyz);
+        GrowingPoints live(domain.xyz);
         TooBigMemo memo;
         ProposalMemo proposals;
         // h at every point, by kernel id: the front's and Steiner points' now, each inserted
@@ -98,7 +98,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             std::size_t added = 0;
             for (std::size_t i = 0; i < batch.size(); ++i)
                 if (!dead[i]) {
-                    live.insert(live.end(), xyz.begin() + 3 * i, xyz.begin() + 3 * i + 3);
+                    live.append(std::span<const double>(xyz).subspan(3 * i, 3));
                     ++added;
                 }
             if (added == 0) break;

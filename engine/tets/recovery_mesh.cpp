@@ -77,7 +77,11 @@ void RecoveryMesh::ball(index_t v, std::vector<index_t>& out, SlotMarks& marks) 
 
 index_t RecoveryMesh::find_edge(index_t a, index_t b, std::vector<index_t>& around, SlotMarks& marks) const {
     ball(a, around, marks);
-    for (index_t t : around)
+    return edge_in(around, b);
+}
+
+index_t RecoveryMesh::edge_in(std::span<const index_t> ball_of_a, index_t b) const {
+    for (index_t t : ball_of_a)
         if (local_of(vertex(t), b) >= 0) return t;
     return kNoIndex;
 }
@@ -116,9 +120,16 @@ std::array<index_t, 3> RecoveryMesh::face(index_t t, int f) const {
 
 RecoveryMesh::FaceSides RecoveryMesh::find_face(index_t a, index_t b, index_t c, std::vector<index_t>& around,
                                                 SlotMarks& marks) const {
-    FaceSides sides;
     ball(a, around, marks);
-    for (index_t t : around) {
+    return face_in(around, a, b, c);
+}
+
+// A face of a valid mesh has at most one tet on each side, so the order of the ball does not
+// change the answer.
+RecoveryMesh::FaceSides RecoveryMesh::face_in(std::span<const index_t> ball_of_a, index_t a, index_t b,
+                                              index_t c) const {
+    FaceSides sides;
+    for (index_t t : ball_of_a) {
         const index_t* v = vertex(t);
         const int ib = local_of(v, b), ic = local_of(v, c);
         if (ib < 0 || ic < 0) continue;

@@ -80,6 +80,10 @@ public:
         std::array<int, 2> local{-1, -1};
     };
     FaceSides find_face(index_t a, index_t b, index_t c, std::vector<index_t>& around, SlotMarks& marks) const;
+    // find_edge and find_face given the ball of a (as ball() lists it), for callers that ask
+    // about several edges or faces at a.
+    index_t edge_in(std::span<const index_t> ball_of_a, index_t b) const;
+    FaceSides face_in(std::span<const index_t> ball_of_a, index_t a, index_t b, index_t c) const;
     // ball and find_edge for concurrent readers (and find_face above), each with its own
     // scratch (`around`: the ball of a).
     void ball(index_t v, std::vector<index_t>& out, SlotMarks& marks) const;

@@ -472,18 +472,25 @@ TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
     EXPECT_GT(proposals.reused_total.load(), 0u);
 }
 
-// select_points against the greedy rule it documents, evaluated directly on random candidates.
-TEST(SelectPoints, SameAsDirectGreedy) {
-    std::uint32_t seed = 7;
-    const auto uniform = [&seed](double lo, double hi) {
+// Uniform numbers from a fixed linear congruential sequence (the same on every platform).
+struct Lcg {
+    std::uint32_t seed;
+    double operator()(double lo, double hi) {
         seed = seed * 1664525u + 1013904223u;
         return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
-    };
-    std::vector<Candidate> cand(3000);
+    }
+};
+
+std::vector<Candidate> random_candidates(Lcg& uniform, std::size_t n) {
+    std::vector<Candidate> cand(n);
     for (Candidate& c : cand) c = {{uniform(0, 1), uniform(0, 1), uniform(0, 1)}, uniform(0.05, 0.15), 0};
-    std::vector<double> existing(3 * 400);
-    for (double& x : existing) x = uniform(0, 1);
-    const double factor = 0.7;
+    return cand;
+}
+
+// The rule select_points documents, evaluated directly: greedy in order, a candidate kept when
+// no existing point and no kept candidate is closer than factor * its h.
+std::vector<index_t> direct_greedy(const std::vector<Candidate>& cand, const std::vector<double>& existing,
+                                   double factor) {
     const auto close = [](const double* a, const double* b, double r) {
         const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
         return dx * dx + dy * dy + dz * dz < r * r;
@@ -497,8 +504,17 @@ TEST(SelectPoints, SameAsDirectGreedy) {
             if (!clash) clash = close(cand[i].p, cand[j].p, r);
         if (!clash) want.push_back(static_cast<index_t>(i));
     }
-    const std::vector<index_t> got = select_points(cand, existing, factor);
-    EXPECT_EQ(got, want);
+    return want;
+}
+
+// select_points against the greedy rule it documents, evaluated directly on random candidates.
+TEST(SelectPoints, SameAsDirectGreedy) {
+    Lcg uniform{7};
+    const std::vector<Candidate> cand = random_candidates(uniform, 3000);
+    std::vector<double> existing(3 * 400);
+    for (double& x : existing) x = uniform(0, 1);
+    const std::vector<index_t> want = direct_greedy(cand, existing, 0.7);
+    EXPECT_EQ(select_points(cand, existing, 0.7), want);
     EXPECT_GT(want.size(), 100u);
     EXPECT_LT(want.size(), cand.size() / 2);
 }
@@ -507,19 +523,10 @@ TEST(SelectPoints, SameAsDirectGreedy) {
 // adding few (the points go to the small tree of recent ones) and some many (everything is
 // indexed again). Every round's selection equals the direct greedy over all points so far.
 TEST(SelectPoints, GrowingPointsAnswerAsAllPointsDo) {
-    std::uint32_t seed = 11;
-    const auto uniform = [&seed](double lo, double hi) {
-        seed = seed * 1664525u + 1013904223u;
-        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
-    };
-    const auto close = [](const double* a, const double* b, double r) {
-        const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-        return dx * dx + dy * dy + dz * dz < r * r;
-    };
+    Lcg uniform{11};
     std::vector<double> all(3 * 400);
     for (double& x : all) x = uniform(0, 1);
     GrowingPoints points(all);
-    const double factor = 0.7;
     // Appended before each round: none (the first round indexes all 400), 50 (a recent tree), 30
     // (the recent tree again, now 80), 200 (over a quarter of 400: all indexed again), none (the
     // trees as they are), 5 (a recent tree again).
@@ -529,18 +536,9 @@ TEST(SelectPoints, GrowingPointsAnswerAsAllPointsDo) {
         points.append(more);
         all.insert(all.end(), more.begin(), more.end());
         ASSERT_EQ(points.size(), all.size() / 3);
-        std::vector<Candidate> cand(1500);
-        for (Candidate& c : cand) c = {{uniform(0, 1), uniform(0, 1), uniform(0, 1)}, uniform(0.05, 0.15), 0};
-        std::vector<index_t> want;
-        for (std::size_t i = 0; i < cand.size(); ++i) {
-            const double r = factor * cand[i].h;
-            bool clash = false;
-            for (std::size_t j = 0; j < all.size() && !clash; j += 3) clash = close(cand[i].p, &all[j], r);
-            for (index_t j : want)
-                if (!clash) clash = close(cand[i].p, cand[j].p, r);
-            if (!clash) want.push_back(static_cast<index_t>(i));
-        }
-        EXPECT_EQ(select_points(cand, points, factor), want) << "after appending " << added;
+        const std::vector<Candidate> cand = random_candidates(uniform, 1500);
+        const std::vector<index_t> want = direct_greedy(cand, all, 0.7);
+        EXPECT_EQ(select_points(cand, points, 0.7), want) << "after appending " << added;
         EXPECT_GT(want.size(), 10u);
     }
 }

@@ -104,6 +104,7 @@ TEST(PointIndex, EmptyAndSmallInputs) {
     EXPECT_FALSE(one.any_within({0, 0, 0}, 1.0));
     EXPECT_TRUE(one.any_within({0, 0, 0}, std::nextafter(1.0, 2.0)));
     EXPECT_FALSE(one.any_within({1, 0, 0}, 0.0));  // no radius: nothing is strictly inside
+    EXPECT_FALSE(one.any_within({1, 0, 0}, -2.0));  // a negative radius is no radius, not 2
     EXPECT_FALSE(empty.any_within({0, 0, 0}, 10.0));
 }
 

@@ -74,8 +74,8 @@ void with_ball_of_first(const RecoveryMesh& m, const std::vector<index_t>& first
 // Whether each target is present now, in parallel. A front edge once present stays so (no flip
 // removes a locked edge, and a Steiner point's cavity never holds one inside), and so does a
 // front triangle once faces are locked: the serial loops below ask again only about the
-// targets missing here and make the same decisions as when they asked about every one, one
-// ball walk each (serpentine lift: 0.15-0.2 s serial).
+// targets missing here and make the same decisions as when they asked about every one (those
+// serial questions, one ball walk each, took 0.15-0.2 s on the serpentine lift).
 std::vector<std::uint8_t> present_now(const RecoveryMesh& m, const std::vector<Target>& targets) {
     std::vector<std::uint8_t> out(targets.size(), 0);
     std::vector<index_t> first(targets.size());
@@ -358,7 +358,8 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
         std::vector<index_t> first(sides.size());
         for (std::size_t i = 0; i < sides.size(); ++i) first[i] = front[3 * i];
         with_ball_of_first(mesh, first, [&](index_t i, std::span<const index_t> ball) {
-            sides[i] = mesh.face_in(ball, front[3 * i], front[3 * i + 1], front[3 * i + 2]);
+            const std::size_t k = 3 * std::size_t{i};
+            sides[i] = mesh.face_in(ball, front[k], front[k + 1], front[k + 2]);
         });
     }
     for (std::size_t i = 0; i < sides.size(); ++i) {

@@ -1,6 +1,8 @@
 #pragma once
 // Advancing-front interior points (paper §5): ideal points proposed on the active front and
-// filtered by the size field. Pure functions of the mesh state: refine.cpp inserts the result.
+// filtered by the size field. Functions of the mesh state (select_points also brings a
+// GrowingPoints' trees up to date, so one object serves one caller at a time): refine.cpp
+// inserts the result.
 // The memo overloads carry what an unchanged tet or face would recompute from one round to the
 // next; they return exactly what the plain ones do (tests/tets_refine_test.cpp checks this).
 #include <array>
@@ -99,8 +101,8 @@ std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const inde
 
 // The points in the mesh as a refinement inserts them (appended to only), indexed for
 // select_points' distance test. The k-d trees over the points up to some round are kept, and
-// the points appended since go into one small tree of their own, until they are a quarter of
-// the kept ones and all are indexed again: the late rounds, which add few points, no longer
+// the points appended since go into one small tree of their own, until they are more than a
+// quarter of the kept ones and all are indexed again: the late rounds, which add few points, no longer
 // build trees over every point (serpentine lift: 0.107 s of the refinement's 0.6 s went to
 // those builds). Queries answer exactly as one tree over all the points would.
 class GrowingPoints {

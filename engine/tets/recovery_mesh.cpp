@@ -124,8 +124,8 @@ RecoveryMesh::FaceSides RecoveryMesh::find_face(index_t a, index_t b, index_t c,
     return face_in(around, a, b, c);
 }
 
-// A face of a valid mesh has at most one tet on each side, so the order of the ball does not
-// change the answer.
+// The first tet found on each side: a face of a valid mesh has at most one there, and ball()
+// lists a vertex's tets in one fixed order, so the answer is the same however it is reached.
 RecoveryMesh::FaceSides RecoveryMesh::face_in(std::span<const index_t> ball_of_a, index_t a, index_t b,
                                               index_t c) const {
     FaceSides sides;

@@ -225,9 +225,9 @@ namespace {
 
 // A set of points (GrowingPoints' kept ones), in two k-d trees split at the median of the
 // bounding box's longest axis: the two halves build at the same time (nanoflann builds
-// serially, and one tree over all of them was the longest serial step of a round, serpentine lift: 0.3 s over
-// the rounds). A query whose ball reaches across the plane asks both, so `empty_within`
-// answers exactly as one tree would.
+// serially, and one tree over all of them was the longest serial step of a round, serpentine
+// lift: 0.3 s over the rounds). A query whose ball reaches across the plane asks both, so
+// `empty_within` answers exactly as one tree would.
 class SplitPoints {
 public:
     explicit SplitPoints(std::span<const double> xyz) : size_(xyz.size() / 3) {

@@ -26,6 +26,16 @@
 
 namespace {
 
+// Uniform numbers from a fixed linear congruential sequence (the same on every platform).
+struct Lcg {
+    std::uint32_t seed;
+    double operator()(double lo, double hi) {
+        seed = seed * 1664525u + 1013904223u;
+        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
+    }
+};
+
+
 using namespace tubemesh;
 using namespace tubemesh::tets;
 using delaunay::kNoAdjacent;
@@ -391,6 +401,46 @@ TEST(ControlSpace, SizeIsTheGradedMinimumOverTheNearestNodes) {
     }
 }
 
+// size_if_far and far_and_clear answer exactly as size and sample do, on points beyond
+// far_reach() of every front node (their shortcut) and within it, for a far size above,
+// near and below the front's sizes and for no grading at all (no shortcut).
+TEST(ControlSpace, FarQueriesAnswerAsTheNearestQueryDoes) {
+    const TetDomain d = l_domain();
+    std::vector<double> x, y, z;
+    for (index_t v = 0; v < d.front_points; ++v) x.push_back(d.point(v)[0]), y.push_back(d.point(v)[1]), z.push_back(d.point(v)[2]);
+    const PointIndex front(x, y, z);
+    Lcg uniform{23};
+    const double s = ControlSpace(d).smallest_size();  // the front's smallest node size (S = largest)
+    for (const auto& [far, gradation] :
+         std::vector<std::pair<double, double>>{{4 * s, 1.5}, {1.05 * s, 1.5}, {0.5 * s, 1.3}, {4 * s, 1.0}}) {
+        ControlSpaceOptions o;
+        o.far_size = far;
+        o.gradation = gradation;
+        const ControlSpace cs(d, o);
+        int beyond = 0, within = 0;
+        for (int i = 0; i < 3000; ++i) {
+            // Every other point anywhere around the L, the others next to a front node.
+            double p[3] = {uniform(-2, 4), uniform(-2, 4), uniform(-2, 3)};
+            if (i % 2) {
+                const index_t v = static_cast<index_t>(uniform(0, 1) * (d.front_points - 1));
+                const double r = std::isfinite(cs.far_reach()) ? cs.far_reach() : 0.1;
+                for (int k = 0; k < 3; ++k) p[k] = d.point(v)[k] + uniform(-0.5, 0.5) * r;
+            }
+            (front.any_within({p[0], p[1], p[2]}, cs.far_reach()) ? within : beyond) += 1;
+            EXPECT_EQ(cs.size_if_far(p), cs.size(p));
+            const ControlSpace::Sample s = cs.sample(p);
+            for (const double clearance : {0.05, 0.3, 1.0})
+                EXPECT_EQ(cs.far_and_clear(p, clearance), s.uncapped >= far && s.nearest_front >= clearance);
+        }
+        if (gradation > 1) {
+            EXPECT_GT(beyond, 100) << "far " << far;
+        }
+        if (far > s) {
+            EXPECT_GT(within, 100) << "far " << far;
+        }
+    }
+}
+
 // point_sizes is the control space's h at each point, and tet_too_big compares a tet's mean
 // edge with tolerance times the mean of its four points' sizes: checked against both computed
 // here, on tolerances that make both answers common.
@@ -471,15 +521,6 @@ TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
     EXPECT_GT(fewer_tests, 0u);
     EXPECT_GT(proposals.reused_total.load(), 0u);
 }
-
-// Uniform numbers from a fixed linear congruential sequence (the same on every platform).
-struct Lcg {
-    std::uint32_t seed;
-    double operator()(double lo, double hi) {
-        seed = seed * 1664525u + 1013904223u;
-        return lo + (hi - lo) * (seed >> 8) / double(1u << 24);
-    }
-};
 
 std::vector<Candidate> random_candidates(Lcg& uniform, std::size_t n) {
     std::vector<Candidate> cand(n);

@@ -50,6 +50,10 @@ ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& o
     // size() is a min of far_size_ and node_size_[i] + (non-negative): never below this.
     smallest_size_ = std::min(far_size_, *std::min_element(node_size_.begin(), node_size_.end()));
     slope_ = options.gradation - 1.0;
+    // A node at distance d >= far_reach_ has s_i + slope d >= smallest + slope far_reach_, which
+    // exceeds S by 1e-6 of (S - smallest) at least: far above the rounding of the terms.
+    far_reach_ = slope_ > 0 ? (far_size_ - smallest_size_) / slope_ * (1 + 1e-6) + 1e-300
+                            : std::numeric_limits<double>::infinity();
     neighbours_ = std::max<index_t>(options.neighbours, 1);
     index_ = std::make_unique<PointIndex>(x_, y_, z_);
 }
@@ -57,6 +61,19 @@ ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& o
 ControlSpace::~ControlSpace() = default;
 
 double ControlSpace::size(const double* p) const { return std::min(far_size_, sample(p).uncapped); }
+
+double ControlSpace::size_if_far(const double* p) const {
+    if (std::isfinite(far_reach_) && !index_->any_within({p[0], p[1], p[2]}, far_reach_)) return far_size_;
+    return size(p);
+}
+
+bool ControlSpace::far_and_clear(const double* p, double clearance) const {
+    // The clearance with the same margin: a node at or beyond it is beyond `clearance` too.
+    const double reach = std::max(far_reach_, clearance * (1 + 1e-6));
+    if (std::isfinite(reach) && !index_->any_within({p[0], p[1], p[2]}, reach)) return true;
+    const Sample s = sample(p);
+    return s.uncapped >= far_size_ && s.nearest_front >= clearance;
+}
 
 ControlSpace::Sample ControlSpace::sample(const double* p) const {
     // The minima do not depend on the order of the neighbours: skip nearest()'s sort.

@@ -38,6 +38,18 @@ public:
         double nearest_front = 0;
     };
     Sample sample(const double* p) const;
+    // size(p), the same value, for a point likely to lie where h has reached S (a caller's hint,
+    // such as a face whose points are all at S): when no front node lies within far_reach() of
+    // p, every node's term is at least S and one "any node within" query answers; otherwise
+    // the k-nearest query does. Far from the front the k nearest lie far away and that query
+    // visits many cells (a lift at S 0.11: a tenth of the run went to it).
+    double size_if_far(const double* p) const;
+    // sample(p).uncapped >= far_size() && sample(p).nearest_front >= clearance, answered the
+    // same way: with no front node within max(far_reach(), clearance) of p, both hold.
+    bool far_and_clear(const double* p, double clearance) const;
+    // Beyond this distance from every front node h is S: (S - smallest node size) / (g - 1),
+    // with a relative margin of 1e-6 so that rounding never decides it (infinite for g = 1).
+    double far_reach() const { return far_reach_; }
     // Local size of front node i (mean incident front edge length).
     double node_size(index_t i) const { return node_size_[i]; }
     double far_size() const { return far_size_; }
@@ -50,6 +62,7 @@ private:
     double far_size_ = 0;
     double smallest_size_ = 0;
     double slope_ = 0;
+    double far_reach_ = 0;
     index_t neighbours_ = 8;
     std::unique_ptr<PointIndex> index_;
 };

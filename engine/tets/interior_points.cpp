@@ -154,6 +154,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             std::copy_n(v, 4, e.ids.begin());
             const auto hit = std::lower_bound(before.begin(), before.end(), faces[i],
                                               [](const ProposalMemo::Entry& x, index_t code) { return x.face < code; });
+            bool far_face = false;  // which way to ask the control space (not what it answers)
             if (hit != before.end() && hit->face == faces[i] && hit->ids == e.ids) {
                 e = *hit;
                 ++reused;
@@ -173,10 +174,14 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 // field the face's own size is too small for the tet it starts. On the paper's
                 // examples this raised the mean collapse by 0.001-0.007 and cut refinement rounds
                 // from 9-10 to 6 (2026-12-02).
-                const Vec3 first = apex((m.h[v[node[0]]] + m.h[v[node[1]]] + m.h[v[node[2]]]) / 3.0);
+                const double h_face = (m.h[v[node[0]]] + m.h[v[node[1]]] + m.h[v[node[2]]]) / 3.0;
+                const Vec3 first = apex(h_face);
                 const Vec3 mid = 0.5 * (g + first);
                 const double mq[3] = {mid.x, mid.y, mid.z};
-                const double h_mid = space.size(mq);
+                // A face whose points are at S most likely proposes where h is S too: ask the
+                // cheaper way first (the same value either way).
+                far_face = h_face >= space.far_size();
+                const double h_mid = far_face ? space.size_if_far(mq) : space.size(mq);
                 Vec3 p = apex(h_mid);
                 e.h = kUnknown;
                 // Snap only where h is the far size (the lattice's spacing is right there) and the
@@ -188,8 +193,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 if (lattice.spacing > 0 && h_mid >= far) {
                     const Vec3 node = nearest_bcc_node(p, lattice.spacing * far);
                     const double nq[3] = {node.x, node.y, node.z};
-                    const ControlSpace::Sample at_node = space.sample(nq);
-                    if (at_node.uncapped >= far && at_node.nearest_front >= lattice.clearance * far) {
+                    if (space.far_and_clear(nq, lattice.clearance * far)) {
                         p = node;
                         e.h = far;
                     }
@@ -202,7 +206,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             const index_t holder = walk_to(m, t, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
             if (holder == kNoIndex) continue;
             // h at the point only for points that may be inserted (most walks succeed).
-            if (std::isnan(e.h)) e.h = space.size(e.p);
+            if (std::isnan(e.h)) e.h = far_face ? space.size_if_far(e.p) : space.size(e.p);
             out[i] = {{e.p[0], e.p[1], e.p[2]}, e.h, holder};
             ok[i] = 1;
         }

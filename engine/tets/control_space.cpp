@@ -50,10 +50,21 @@ ControlSpace::ControlSpace(const TetDomain& domain, const ControlSpaceOptions& o
     // size() is a min of far_size_ and node_size_[i] + (non-negative): never below this.
     smallest_size_ = std::min(far_size_, *std::min_element(node_size_.begin(), node_size_.end()));
     slope_ = options.gradation - 1.0;
-    // A node at distance d >= far_reach_ has s_i + slope d >= smallest + slope far_reach_, which
-    // exceeds S by 1e-6 of (S - smallest) at least: far above the rounding of the terms.
-    far_reach_ = slope_ > 0 ? (far_size_ - smallest_size_) / slope_ * (1 + 1e-6) + 1e-300
-                            : std::numeric_limits<double>::infinity();
+    // A node whose squared distance (as the index computes it) is at least far_reach_^2 has
+    // slope * d above S - smallest even after the rounding of R, R^2, the square root and the
+    // product (a few ulps; the margin is 1e-6), so the real sum s_i + slope d exceeds S, and its
+    // rounding, which keeps order, is at least S (a double): size() is then S exactly. With S
+    // at or below every node's size h is S everywhere (reach 0). No shortcut without grading,
+    // nor where R^2 would underflow (it could no longer tell a node at distance 0).
+    const double inf = std::numeric_limits<double>::infinity();
+    if (far_size_ <= smallest_size_) {
+        far_reach_ = 0;
+    } else if (slope_ > 0) {
+        const double r = (far_size_ - smallest_size_) / slope_ * (1 + 1e-6);
+        far_reach_ = r * r >= std::numeric_limits<double>::min() ? r : inf;
+    } else {
+        far_reach_ = inf;
+    }
     neighbours_ = std::max<index_t>(options.neighbours, 1);
     index_ = std::make_unique<PointIndex>(x_, y_, z_);
 }
@@ -63,14 +74,18 @@ ControlSpace::~ControlSpace() = default;
 double ControlSpace::size(const double* p) const { return std::min(far_size_, sample(p).uncapped); }
 
 double ControlSpace::size_if_far(const double* p) const {
+    if (far_reach_ == 0) return far_size_;
     if (std::isfinite(far_reach_) && !index_->any_within({p[0], p[1], p[2]}, far_reach_)) return far_size_;
     return size(p);
 }
 
 bool ControlSpace::far_and_clear(const double* p, double clearance) const {
-    // The clearance with the same margin: a node at or beyond it is beyond `clearance` too.
+    // The clearance with the same margin: a node at or beyond it is beyond `clearance` too
+    // (a reach whose square would underflow, or a NaN clearance, takes the full query).
     const double reach = std::max(far_reach_, clearance * (1 + 1e-6));
-    if (std::isfinite(reach) && !index_->any_within({p[0], p[1], p[2]}, reach)) return true;
+    if (std::isfinite(reach) && reach * reach >= std::numeric_limits<double>::min() && clearance == clearance &&
+        !index_->any_within({p[0], p[1], p[2]}, reach))
+        return true;
     const Sample s = sample(p);
     return s.uncapped >= far_size_ && s.nearest_front >= clearance;
 }

@@ -48,7 +48,8 @@ public:
     // same way: with no front node within max(far_reach(), clearance) of p, both hold.
     bool far_and_clear(const double* p, double clearance) const;
     // Beyond this distance from every front node h is S: (S - smallest node size) / (g - 1),
-    // with a relative margin of 1e-6 so that rounding never decides it (infinite for g = 1).
+    // with a relative margin of 1e-6 so that rounding never decides it; 0 when S is at or
+    // below every node's size, infinite (no shortcut) for g = 1 or a reach too small to square.
     double far_reach() const { return far_reach_; }
     // Local size of front node i (mean incident front edge length).
     double node_size(index_t i) const { return node_size_[i]; }

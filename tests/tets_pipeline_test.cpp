@@ -127,12 +127,6 @@ TEST(ThinRingTets, NoFlatTetWherePyramidFacesMeet) {
     EXPECT_EQ(f.below_0_2, 0);
 }
 
-// Pipes 0.5 beside the long side walls of an 8 x 40 x 3 block (default S 1.64, about 47 k tets,
-// under a second). The tet step grades from the rings' quads (0.05) and asks for about 0.31 at
-// the walls, but the surface field, which grades only from the end walls' ring holes, gave the
-// side walls triangles of about 1 there: the tets on them were caps (collapse 0.287). The
-// surface is now meshed again with caps where its triangles pass twice the tets' size
-// (engine/pipeline/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
 // A box with straight cooling pipes (diameter 0.032) along x from wall to wall, at height
 // z and at each y of `ys`.
 geom::BlockSpec straight_pipes(const std::string& name, const Vec3& box, std::initializer_list<double> ys, double z) {
@@ -149,6 +143,12 @@ geom::BlockSpec straight_pipes(const std::string& name, const Vec3& box, std::in
     return spec;
 }
 
+// Pipes 0.5 beside the long side walls of an 8 x 40 x 3 block (default S 1.64, about 47 k tets,
+// under a second). The tet step grades from the rings' quads (0.05) and asks for about 0.31 at
+// the walls, but the surface field, which grades only from the end walls' ring holes, gave the
+// side walls triangles of about 1 there: the tets on them were caps (collapse 0.287). The
+// surface is now meshed again with caps where its triangles pass twice the tets' size
+// (engine/pipeline/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
 geom::BlockSpec pipes_beside_walls() { return straight_pipes("two pipes beside the walls", {8, 40, 3}, {0.5, 39.5}, 1.5); }
 
 TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {

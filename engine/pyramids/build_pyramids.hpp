@@ -78,8 +78,8 @@ struct PyramidOptions {
     // to the front's edges (§4 Step 4).
     double distance_factor = 0.65;
     // Relaxed pass: try node k (k = 1..try_nodes) sits at M + Rate·(N − M) (height_factor·h·Rate
-    // above M but for a front placed for a wedge, fronts.hpp) and
-    // is judged with max_angle/Rate and distance_factor·h·Rate, Rate = relax_rate^k (§4 Step 8).
+    // above M but for a front placed for a wedge, fronts.hpp) and is judged with max_angle/Rate
+    // and distance_factor·h·Rate, Rate = relax_rate^k (§4 Step 8).
     double relax_rate = 0.9;
     int try_nodes = 5;
     // Drawback rounds before giving up with tubemesh::Error (the mesh is then unchanged).

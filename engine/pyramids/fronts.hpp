@@ -26,7 +26,8 @@ struct alignas(64) Front {
     Vec3 normal;    // n, unit, into the tet region
     // N over M: the paper's height_factor·h on the normal line, but for a front with an edge
     // on a boundary face whose wedge there is too narrow (wedge.hpp): at wedge_height_factor·h
-    // (lower, with the default factors), and shifted in the quad's plane away from that edge. Try node k is M + Rate·(N − M).
+    // (lower, with the default factors), and shifted in the quad's plane away from that edge.
+    // Try node k is M + Rate·(N − M).
     Vec3 shift;
     double height;
     double h;       // mean edge length

@@ -6,8 +6,9 @@
 // at a right angle an apex at height H over the centroid leaves atan(a/2 / H) for an end quad
 // of axial length a. The paper's apex (H = 0.98 h, 31.5 degrees on the default rings) is too
 // close to the host for its distance rule there, so the first try node served (0.88 h, 34
-// degrees), which caps that tet's collapse near 0.29, the worst of a whole dam lift. Such fronts get an ideal apex lowered and
-// shifted along the quad away from the edge until the wedge reaches a target angle.
+// degrees), which caps that tet's collapse near 0.29, the worst of a whole dam lift. Such
+// fronts get an ideal apex lowered and shifted along the quad away from the edge until the
+// wedge reaches a target angle.
 #include <cstdint>
 #include <span>
 #include <utility>

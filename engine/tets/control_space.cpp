@@ -83,7 +83,7 @@ bool ControlSpace::far_and_clear(const double* p, double clearance) const {
     // The clearance with the same margin: a node at or beyond it is beyond `clearance` too
     // (a reach whose square would underflow, or a NaN clearance, takes the full query).
     const double reach = std::max(far_reach_, clearance * (1 + 1e-6));
-    if (std::isfinite(reach) && reach * reach >= std::numeric_limits<double>::min() && clearance == clearance &&
+    if (std::isfinite(reach) && reach * reach >= std::numeric_limits<double>::min() && !std::isnan(clearance) &&
         !index_->any_within({p[0], p[1], p[2]}, reach))
         return true;
     const Sample s = sample(p);

@@ -199,7 +199,6 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
     std::vector<std::uint32_t> claimed;  // round stamp of the round that took the tet
     std::vector<std::uint32_t> written;  // last round whose flips rewrote the slot's vertex row (0: none)
     std::vector<std::size_t> taken, waiting;
-    std::vector<std::uint8_t> applied;
     const index_t spare_per_move = static_cast<index_t>(max_extra_slots(max_edge_ring));
 
     while (!pending.empty()) {

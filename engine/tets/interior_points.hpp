@@ -102,9 +102,9 @@ std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const inde
 // The points in the mesh as a refinement inserts them (appended to only), indexed for
 // select_points' distance test. The k-d trees over the points up to some round are kept, and
 // the points appended since go into one small tree of their own, until they are more than a
-// quarter of the kept ones and all are indexed again: the late rounds, which add few points, no longer
-// build trees over every point (serpentine lift: 0.107 s of the refinement's 0.6 s went to
-// those builds). Queries answer exactly as one tree over all the points would.
+// quarter of the kept ones and all are indexed again: the late rounds, which add few points,
+// no longer build trees over every point (serpentine lift: 0.107 s of the refinement's 0.6 s
+// went to those builds). Queries answer exactly as one tree over all the points would.
 class GrowingPoints {
 public:
     explicit GrowingPoints(std::span<const double> xyz);  // 3 coordinates per point
@@ -114,9 +114,8 @@ public:
     void append(std::span<const double> xyz);
     std::size_t size() const;
 
-    struct Impl;  // select_points' access
-
 private:
+    struct Impl;
     friend std::vector<index_t> select_points(std::span<const Candidate>, GrowingPoints&, double);
     std::unique_ptr<Impl> impl_;
 };

@@ -22,6 +22,7 @@
 #include "engine/tets/control_space.hpp"
 #include "engine/tets/interior_points.hpp"
 #include "engine/tets/refine.hpp"
+#include "tests/support/tet_domain_checks.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 
 namespace {
@@ -40,14 +41,8 @@ using namespace tubemesh;
 using namespace tubemesh::tets;
 using delaunay::kNoAdjacent;
 namespace pred = tubemesh::predicates;
-
-using Tri = std::array<index_t, 3>;
-
-Tri sorted(index_t a, index_t b, index_t c) {
-    Tri t{a, b, c};
-    std::sort(t.begin(), t.end());
-    return t;
-}
+using tubemesh::testing::cube_front;
+using tubemesh::testing::expect_valid;
 
 // The boundary faces (kNoAdjacent) of the domain's tets, outward, as the front.
 std::vector<index_t> boundary_faces(const delaunay::TetStore& tets) {
@@ -133,33 +128,6 @@ TetDomain l_domain() {
 }
 
 using tubemesh::testing::domain_volume;
-
-void expect_valid(const TetDomain& d, const std::vector<index_t>& front) {
-    std::set<Tri> boundary;
-    for (index_t t = 0; t < d.tets.size(); ++t) {
-        const index_t* v = d.tets.vertex(t);
-        for (int i = 0; i < 4; ++i) ASSERT_LT(v[i], d.point_count());
-        ASSERT_GT(pred::orient3d(d.point(v[0]), d.point(v[1]), d.point(v[2]), d.point(v[3])), 0) << "tet " << t;
-        for (unsigned f = 0; f < 4; ++f) {
-            const auto& node = kTetTopology.face[f].node;
-            const index_t code = d.tets.neighbour(4 * t + f);
-            if (code == kNoAdjacent) {
-                boundary.insert(sorted(v[node[0]], v[node[1]], v[node[2]]));
-                continue;
-            }
-            ASSERT_EQ(d.tets.neighbour(code), 4 * t + f);
-            const index_t* w = d.tets.vertex(code >> 2);
-            const auto& node2 = kTetTopology.face[code & 3].node;
-            ASSERT_EQ(sorted(v[node[0]], v[node[1]], v[node[2]]), sorted(w[node2[0]], w[node2[1]], w[node2[2]]));
-        }
-    }
-    std::set<Tri> want;
-    for (std::size_t i = 0; i < front.size(); i += 3) want.insert(sorted(front[i], front[i + 1], front[i + 2]));
-    EXPECT_EQ(boundary, want) << "the boundary is not exactly the front";
-    std::vector<std::uint8_t> used(d.point_count(), 0);
-    for (index_t v : d.tets.vertices()) used[v] = 1;
-    for (index_t v = d.front_points; v < d.point_count(); ++v) EXPECT_TRUE(used[v]) << "point " << v << " in no tet";
-}
 
 struct SizeReport {
     double in_band = 0, min_q = 1, mean_q = 0, closest = 1e300, min_new_q = 1;
@@ -273,42 +241,6 @@ TEST(Refine, DeterministicAcrossRunsAndThreads) {
         EXPECT_TRUE(std::equal(a.tets.vertices().begin(), a.tets.vertices().end(), other->tets.vertices().begin()));
         EXPECT_TRUE(std::equal(a.tets.neighbours().begin(), a.tets.neighbours().end(), other->tets.neighbours().begin()));
     }
-}
-
-// A closed front: the grid-triangulated surface of the cube [lo,hi]^3, n cells per edge,
-// normals outward (or inward, for a hole). Points shared between faces are merged.
-void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& xyz, std::vector<index_t>& front) {
-    std::map<std::array<long, 3>, index_t> ids;
-    const auto id = [&](const double p[3]) {
-        const std::array<long, 3> key{std::lround(p[0] * 1e6), std::lround(p[1] * 1e6), std::lround(p[2] * 1e6)};
-        const auto [it, fresh] = ids.emplace(key, static_cast<index_t>(xyz.size() / 3));
-        if (fresh) xyz.insert(xyz.end(), p, p + 3);
-        return it->second;
-    };
-    for (int axis = 0; axis < 3; ++axis)
-        for (int side = 0; side < 2; ++side) {
-            const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // (a, b, axis) right-handed
-            for (int i = 0; i < n; ++i)
-                for (int j = 0; j < n; ++j) {
-                    index_t q[4];
-                    const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
-                    for (int k = 0; k < 4; ++k) {
-                        double p[3];
-                        p[axis] = side ? hi : lo;
-                        p[a] = lo + (hi - lo) * (i + di[k]) / n;
-                        p[b] = lo + (hi - lo) * (j + dj[k]) / n;
-                        q[k] = id(p);
-                    }
-                    // Counter-clockwise in (a, b) points along +axis: outward on the high side.
-                    const bool flip = (side == 0) == outward;
-                    const index_t t[6] = {q[0], q[1], q[2], q[0], q[2], q[3]};
-                    for (int k = 0; k < 6; k += 3) {
-                        front.push_back(t[k]);
-                        front.push_back(flip ? t[k + 2] : t[k + 1]);
-                        front.push_back(flip ? t[k + 1] : t[k + 2]);
-                    }
-                }
-        }
 }
 
 // A real front through boundary recovery: a cube with a cubic hole, sizes 0.1 outside, 0.05 at

@@ -203,4 +203,27 @@ InsertionOrder brio_hilbert_order(std::span<const double> x, std::span<const dou
     return out;
 }
 
+std::vector<index_t> curve_order(std::span<const double> xyz) {
+    const std::size_t n = xyz.size() / 3;
+    std::vector<index_t> order(n);
+    if (n == 0) return order;
+    double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {lo[0], lo[1], lo[2]};
+    for (std::size_t i = 0; i < n; ++i)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], xyz[3 * i + a]);
+            hi[a] = std::max(hi[a], xyz[3 * i + a]);
+        }
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
+    const double scale = double((1u << 16) - 1) / extent;
+    std::vector<std::pair<std::uint64_t, index_t>> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t g[3];
+        for (int a = 0; a < 3; ++a) g[a] = static_cast<std::uint32_t>((xyz[3 * i + a] - lo[a]) * scale);
+        key[i] = {hilbert_key(g[0], g[1], g[2], 16), static_cast<index_t>(i)};
+    }
+    std::sort(key.begin(), key.end());
+    for (std::size_t i = 0; i < n; ++i) order[i] = key[i].second;
+    return order;
+}
+
 }  // namespace tubemesh::delaunay

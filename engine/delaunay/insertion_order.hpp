@@ -14,6 +14,11 @@ namespace tubemesh::delaunay {
 // Hilbert index of a point on a 2^bits grid per axis (bits <= 21), 3*bits significant bits.
 std::uint64_t hilbert_key(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz, int bits);
 
+// The order of the points (3 coordinates each) along the Hilbert curve on a 2^16 grid over
+// their bounding cube, equal keys in input order: indices into the points. For a batch of
+// points inserted into an existing mesh, so that each kernel part walks along one stretch.
+std::vector<index_t> curve_order(std::span<const double> xyz);
+
 struct InsertionOrder {
     std::vector<index_t> order;        // point ids in insertion order
     std::vector<index_t> round_begin;  // round r is order[round_begin[r], round_begin[r+1])

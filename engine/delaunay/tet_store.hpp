@@ -106,6 +106,10 @@ public:
     index_t& neighbour(index_t face_code) { return neighbour_[face_code]; }
     index_t neighbour(index_t face_code) const { return neighbour_[face_code]; }
 
+    // A copy of the slots in use. The store has no copy constructor, so that a 100 MB copy is
+    // always asked for by name.
+    TetStore clone() const;
+
     // Capacity changes only between parallel phases: pointers into the arrays move.
     void reserve(std::size_t n);
     void shrink_to_fit() { set_capacity(size_); }
@@ -123,6 +127,17 @@ private:
 inline void TetStore::reserve(std::size_t n) {
     if (n > kMaxTets) throw Error("Delaunay: more than 2^30 tetrahedra do not fit the 32-bit adjacency encoding");
     if (n > capacity()) set_capacity(n);
+}
+
+inline TetStore TetStore::clone() const {
+    TetStore c;
+    c.reserve(size_);
+    c.size_ = size_;
+    if (size_ > 0) {
+        std::memcpy(c.vertex_.data(), vertex_.data(), std::size_t{4} * size_ * sizeof(index_t));
+        std::memcpy(c.neighbour_.data(), neighbour_.data(), std::size_t{4} * size_ * sizeof(index_t));
+    }
+    return c;
 }
 
 inline void TetStore::set_capacity(std::size_t n) {

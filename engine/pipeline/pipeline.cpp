@@ -198,7 +198,7 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
 
 void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
-    PhaseProgress progress(opt.progress, "tets", 3);  // recovery, refinement, optimisation
+    PhaseProgress progress(opt.progress, "tets", 3);  // recovery, refinement + relaxation, optimisation
     tets::TetStepOptions to = opt.tets;
     to.far_size = tet_far_size(in, opt);
     to.threads = opt.threads > 0 ? static_cast<unsigned>(opt.threads) : 0;
@@ -215,6 +215,10 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
                 {"front faces recovered", double(s.recovery.missing_faces)},
                 {"steiner points kept", double(s.recovery.steiner_kept)},
                 {"refinement rounds", double(s.refine.rounds)},
+                // ODT relaxation: moves over all its iterations, and the points it could not
+                // insert again (removed).
+                {"relaxation moves", double(s.relaxation.moves)},
+                {"relaxation points dropped", double(s.relaxation.dropped)},
                 {"flips", double(s.optimise.flips23 + s.optimise.flips32 + s.optimise.flips44 + s.optimise.edge_removals)},
                 {"smoothing moves", double(s.optimise.moves)},
                 // The worst-tet rescue after the passes: tets lifted, and how many of them by a
@@ -223,6 +227,7 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
                 {"rescue points", double(s.optimise.inserted_points)}};
     r.statistics = {{"recovery s", s.recovery.seconds_total},
                     {"refinement s", s.refine.seconds},
+                    {"relaxation s", s.relaxation.seconds},
                     {"optimisation s", s.optimise.seconds_total},
                     {"optimisation flips s", s.optimise.seconds_flips},
                     {"optimisation smoothing s", s.optimise.seconds_smoothing},

@@ -17,32 +17,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Hilbert order over the batch's bounding cube: each kernel part walks along one stretch.
-void sort_along_curve(std::vector<Candidate>& c) {
-    if (c.size() < 2) return;
-    double lo[3] = {c[0].p[0], c[0].p[1], c[0].p[2]}, hi[3] = {lo[0], lo[1], lo[2]};
-    for (const Candidate& q : c)
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], q.p[a]);
-            hi[a] = std::max(hi[a], q.p[a]);
-        }
-    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
-    const double scale = double((1u << 16) - 1) / extent;
-    std::vector<std::pair<std::uint64_t, index_t>> key(c.size());
-    for (std::size_t i = 0; i < c.size(); ++i) {
-        std::uint32_t g[3];
-        for (int a = 0; a < 3; ++a) g[a] = static_cast<std::uint32_t>((c[i].p[a] - lo[a]) * scale);
-        key[i] = {delaunay::hilbert_key(g[0], g[1], g[2], 16), static_cast<index_t>(i)};
-    }
-    std::sort(key.begin(), key.end());
-    std::vector<Candidate> sorted(c.size());
-    for (std::size_t i = 0; i < c.size(); ++i) sorted[i] = c[key[i].second];
-    c.swap(sorted);
-}
-
 }  // namespace
 
-RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options) {
+RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options,
+                            std::vector<double>* sizes_out) {
     const auto t0 = Clock::now();
     if (domain.tets.size() == 0) throw Error("refinement: the tet domain has no tetrahedra");
     const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
@@ -73,9 +51,12 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             const std::vector<index_t> keep = select_points(cand, live, options.reject_factor);
             stats.rejected_close += cand.size() - keep.size();
             if (keep.empty()) break;
+            std::vector<double> kept_xyz(3 * keep.size());
+            for (std::size_t i = 0; i < keep.size(); ++i) std::copy_n(cand[keep[i]].p, 3, kept_xyz.begin() + 3 * i);
+            // Along the Hilbert curve over the batch: each kernel part walks along one stretch.
+            const std::vector<index_t> along = delaunay::curve_order(kept_xyz);
             std::vector<Candidate> batch(keep.size());
-            for (std::size_t i = 0; i < keep.size(); ++i) batch[i] = cand[keep[i]];
-            sort_along_curve(batch);
+            for (std::size_t i = 0; i < keep.size(); ++i) batch[i] = cand[keep[along[i]]];
 
             const index_t base = tri.point_count();
             std::vector<double> xyz(3 * batch.size());
@@ -113,21 +94,13 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         domain.tets = tri.finish();
 
         // Drop the points the kernel skipped: renumber the new points densely, in order.
-        const index_t n = domain.point_count();
-        std::vector<std::uint8_t> used(n, 0);
-        for (index_t v : domain.tets.vertices()) used[v] = 1;
-        std::vector<index_t> to(n, kNoIndex);
-        index_t next = first_new;
-        for (index_t v = 0; v < first_new; ++v) to[v] = v;
-        for (index_t v = first_new; v < n; ++v)
-            if (used[v]) {
-                to[v] = next;
-                std::copy_n(domain.xyz.begin() + 3 * std::size_t{v}, 3, domain.xyz.begin() + 3 * std::size_t{next});
-                ++next;
-            }
-        domain.xyz.resize(3 * std::size_t{next});
-        for (index_t t = 0; t < domain.tets.size(); ++t)
-            for (int i = 0; i < 4; ++i) domain.tets.vertex(t)[i] = to[domain.tets.vertex(t)[i]];
+        const std::vector<index_t> to = drop_unused_points(domain, first_new);
+        const index_t next = domain.point_count();
+        if (sizes_out) {
+            sizes_out->assign(next, 0.0);
+            for (std::size_t v = 0; v < to.size(); ++v)
+                if (to[v] != kNoIndex) (*sizes_out)[to[v]] = sizes[v];
+        }
         stats.inserted = next - first_new;
     });
     stats.tets = domain.tets.size();

@@ -6,6 +6,7 @@
 // far enough from existing points and from each other are inserted, until no tet is too big or
 // a round adds nothing.
 #include <cstdint>
+#include <vector>
 
 #include "engine/core/types.hpp"
 #include "engine/tets/tet_domain.hpp"
@@ -58,6 +59,9 @@ struct RefineStats {
 
 // Keeps TetDomain's invariants: existing points and front unchanged, new points appended,
 // all tets positive, no free slots. Throws tubemesh::Error on an empty domain.
-RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options = {});
+// With `sizes`, also the target size h at every point of the result by id (the control space's
+// at the points there before, each inserted point's from its candidate), for the relaxation.
+RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options = {},
+                            std::vector<double>* sizes = nullptr);
 
 }  // namespace tubemesh::tets

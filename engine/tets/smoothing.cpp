@@ -21,23 +21,6 @@ namespace tubemesh::tets {
 
 namespace {
 
-// The volume-weighted mean of the star's circumcentres: the optimal-Delaunay (ODT) position of
-// p (Chen and Holst), which spreads points evenly where the centroid only averages them.
-Vec3 odt_target(const StarCorners& star, const Vec3& fallback) {
-    Vec3 sum{0, 0, 0};
-    double weight = 0;
-    for (const auto& corner : star.corners) {
-        const Vec3 a = corner[0];
-        const Vec3 b = corner[1] - a, c = corner[2] - a, d = corner[3] - a;
-        const double det = dot(b, cross(c, d));
-        if (!(det > 0)) continue;
-        const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
-        sum = sum + det * centre;
-        weight += det;
-    }
-    return weight > 0 ? (1.0 / weight) * sum : fallback;
-}
-
 // The direction in which the sum of the star's collapses rises fastest when p moves (zero when
 // there is none). A tet's collapse is 3V / A^(3/2) over the regular tet's, A its largest face
 // area, so d ln q = d(3V) / 3V - 1.5 dA / A; only the faces through p have areas that move.
@@ -323,6 +306,23 @@ Vec3 star_centroid(const StarCorners& star) {
         for (int i = 0; i < 4; ++i)
             if (i != star.at[k]) centroid = centroid + star.corners[k][i];
     return (1.0 / (3.0 * static_cast<double>(star.corners.size()))) * centroid;
+}
+
+Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const double> weight) {
+    Vec3 sum{0, 0, 0};
+    double total = 0;
+    for (std::size_t k = 0; k < star.corners.size(); ++k) {
+        const auto& corner = star.corners[k];
+        const Vec3 a = corner[0];
+        const Vec3 b = corner[1] - a, c = corner[2] - a, d = corner[3] - a;
+        const double det = dot(b, cross(c, d));
+        if (!(det > 0)) continue;
+        const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
+        const double w = weight.empty() ? det : det * weight[k];
+        sum = sum + w * centre;
+        total += w;
+    }
+    return total > 0 ? (1.0 / total) * sum : fallback;
 }
 
 namespace {

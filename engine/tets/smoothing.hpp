@@ -66,6 +66,12 @@ void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_
 // The mean of the star's corners other than p (each counted once per tet it is in).
 Vec3 star_centroid(const StarCorners& star);
 
+// The optimal-Delaunay (ODT) position of the star's point (Chen and Holst): the mean of its tets'
+// circumcentres weighted by their volumes, times weight[k] for tet k when `weight` is given (a
+// density: the relaxation passes 1 / h^3). ODT spreads points evenly where the centroid only
+// averages them. Tets that are not positive are left out; `fallback` when none is.
+Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const double> weight = {});
+
 // The smallest collapse and the sum of collapses of the star's tets with p placed at x.
 struct StarQuality {
     double worst = std::numeric_limits<double>::infinity();

@@ -35,4 +35,9 @@ struct TetDomain {
     const double* point(index_t p) const { return xyz.data() + std::size_t{3} * p; }
 };
 
+// Removes the points from `first` on that no tet uses (the ones a kernel run skipped) and moves
+// the later ones down, in order; points before `first` keep their ids. Returns the old -> new
+// id map (kNoIndex for a removed point).
+std::vector<index_t> drop_unused_points(TetDomain& d, index_t first);
+
 }  // namespace tubemesh::tets

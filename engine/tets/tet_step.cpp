@@ -41,6 +41,13 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     ro.threads = threads;
     ro.partitions = parts;
     TetDomain domain = recover_boundary(xyz, local, ro, &stats.recovery);
+    // The relaxation inserts the interior points again into this mesh.
+    TetDomain recovered;
+    if (options.relaxation.iterations > 0) {
+        recovered.xyz = domain.xyz;
+        recovered.front_points = domain.front_points;
+        recovered.tets = domain.tets.clone();
+    }
     if (options.part_done) options.part_done();
 
     ControlSpaceOptions co;
@@ -51,8 +58,16 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     RefineOptions fo = options.refine;
     fo.threads = threads;
     fo.partitions = parts;
-    stats.refine = refine_interior(domain, space, fo);
-    if (options.part_done) options.part_done();
+    std::vector<double> sizes;
+    stats.refine = refine_interior(domain, space, fo, options.relaxation.iterations > 0 ? &sizes : nullptr);
+    if (options.relaxation.iterations > 0) {
+        RelaxationOptions xo = options.relaxation;
+        xo.threads = threads;
+        xo.partitions = parts;
+        stats.relaxation = relax_points(domain, recovered, sizes, xo);
+        recovered = TetDomain();
+    }
+    if (options.part_done) options.part_done();  // refinement and relaxation
 
     OptimiseOptions oo = options.optimise;
     oo.threads = threads;

@@ -1,7 +1,7 @@
 #pragma once
 // The whole tet step (paper §5) on the pipeline's mesh: the closed front (PipelineResult::
-// tet_front, mesh node ids) -> boundary recovery -> control space -> interior points ->
-// optimisation -> new points and tets appended to the HybridMesh.
+// tet_front, mesh node ids) -> boundary recovery -> control space -> interior points -> ODT
+// relaxation -> optimisation -> new points and tets appended to the HybridMesh.
 //
 // The front's nodes keep their mesh ids; Steiner points of the recovery, interior points and
 // the optimisation's rescue points become new mesh points, appended in the domain's order, so
@@ -17,6 +17,7 @@
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/tets/boundary_recovery.hpp"
 #include "engine/tets/control_space.hpp"
+#include "engine/tets/odt_relaxation.hpp"
 #include "engine/tets/optimise.hpp"
 #include "engine/tets/refine.hpp"
 
@@ -46,6 +47,7 @@ struct TetStepOptions {
     unsigned partitions = 2;
     RecoveryOptions recovery;  // threads/partitions are overridden by the two fields above
     RefineOptions refine;      // likewise
+    RelaxationOptions relaxation;  // likewise
     OptimiseOptions optimise;  // likewise for threads
     // Called after each of the three parts (recovery, refinement, optimisation), for progress
     // reports; may be empty. The mesh does not depend on it.
@@ -55,6 +57,7 @@ struct TetStepOptions {
 struct TetStepStats {
     RecoveryStats recovery;
     RefineStats refine;
+    RelaxationStats relaxation;
     OptimiseStats optimise;
     index_t front_triangles = 0;
     index_t new_points = 0;  // Steiner + interior points appended to the mesh

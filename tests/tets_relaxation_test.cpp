@@ -1,0 +1,172 @@
+// ODT relaxation of the tet step's interior points (engine/tets/odt_relaxation.hpp): the ODT
+// target itself, and relax_points on a recovered and refined cube with a cubic hole (a graded
+// size field, 0.1 outside, 0.05 at the hole): the domain's invariants, its volume, the fixed
+// points, the quality gain and determinism across thread counts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "engine/mesh/vec3_ops.hpp"
+#include "engine/tets/boundary_recovery.hpp"
+#include "engine/tets/control_space.hpp"
+#include "engine/tets/odt_relaxation.hpp"
+#include "engine/tets/refine.hpp"
+#include "engine/tets/smoothing.hpp"
+#include "engine/tets/tet_neighbourhood.hpp"
+#include "tests/support/tet_domain_checks.hpp"
+#include "tests/support/tet_domain_volume.hpp"
+
+namespace {
+
+using namespace tubemesh;
+using namespace tubemesh::tets;
+using tubemesh::testing::cube_front;
+using tubemesh::testing::domain_volume;
+using tubemesh::testing::expect_valid;
+
+// The star of the origin in the 8 tets of a regular octahedron (vertices at distance 1 on the
+// axes), each tet positive with the origin at local index 3.
+StarCorners octahedron_star(const Vec3& centre) {
+    const Vec3 axis[6] = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    StarCorners s;
+    for (int k = 0; k < 4; ++k)
+        for (int top = 0; top < 2; ++top) {
+            const Vec3 a = axis[k], b = axis[(k + 1) % 4], c = axis[4 + top];
+            std::array<Vec3, 4> t = top == 0 ? std::array<Vec3, 4>{a, b, c, centre} : std::array<Vec3, 4>{b, a, c, centre};
+            if (dot(cross(t[1] - t[0], t[2] - t[0]), t[3] - t[0]) < 0) std::swap(t[0], t[1]);
+            s.corners.push_back(t);
+            s.at.push_back(3);
+        }
+    return s;
+}
+
+TEST(OdtTarget, CentreOfASymmetricStarAndPulledByDensity) {
+    // Every tet's circumcentre lies on its outer face's side, symmetrically: the mean is the centre.
+    const StarCorners off = octahedron_star({0.2, -0.1, 0.05});
+    const Vec3 plain = odt_target(off, {9, 9, 9});
+    EXPECT_NEAR(plain.x, 0.0, 1e-12);
+    EXPECT_NEAR(plain.y, 0.0, 1e-12);
+    EXPECT_NEAR(plain.z, 0.0, 1e-12);
+    // A heavier weight on the tets towards +x (denser points wanted there) moves it towards +x.
+    const StarCorners star = octahedron_star({0, 0, 0});
+    std::vector<double> w(star.corners.size());
+    for (std::size_t k = 0; k < w.size(); ++k) {
+        double x = 0;
+        for (int i = 0; i < 3; ++i) x += star.corners[k][i].x;
+        w[k] = x > 0 ? 3.0 : 1.0;
+    }
+    const Vec3 pulled = odt_target(star, {9, 9, 9}, w);
+    EXPECT_GT(pulled.x, 0.05);
+    EXPECT_NEAR(pulled.y, 0.0, 1e-12);
+    EXPECT_NEAR(pulled.z, 0.0, 1e-12);
+    // No positive tet: the fallback.
+    StarCorners flat = star;
+    for (auto& t : flat.corners) std::swap(t[0], t[1]);
+    const Vec3 fb = odt_target(flat, {9, 8, 7});
+    EXPECT_EQ(fb.x, 9);
+    EXPECT_EQ(fb.z, 7);
+}
+
+struct Refined {
+    TetDomain recovered, domain;
+    std::vector<double> sizes;
+};
+
+// The cube [0,1]^3 (10 cells per edge) with the hole [0.35,0.65]^3 (6 cells per edge),
+// recovered and refined with gradation 1.6 as in the pipeline.
+Refined refined_cube() {
+    std::vector<double> xyz;
+    std::vector<index_t> front;
+    cube_front(0.0, 1.0, 10, true, xyz, front);
+    cube_front(0.35, 0.65, 6, false, xyz, front);
+    RecoveryOptions ro;
+    ro.threads = 2;
+    ro.partitions = 2;
+    Refined r;
+    r.domain = recover_boundary(xyz, front, ro);
+    r.recovered.xyz = r.domain.xyz;
+    r.recovered.front_points = r.domain.front_points;
+    r.recovered.front = r.domain.front;
+    r.recovered.tets = r.domain.tets.clone();
+    ControlSpaceOptions co;
+    co.gradation = 1.6;
+    const ControlSpace space(r.domain, co);
+    RefineOptions fo;
+    fo.threads = 2;
+    fo.partitions = 2;
+    fo.min_points_per_part = 64;
+    refine_interior(r.domain, space, fo, &r.sizes);
+    return r;
+}
+
+double mean_collapse(const TetDomain& d) {
+    double sum = 0;
+    for (index_t t = 0; t < d.tets.size(); ++t) {
+        const index_t* v = d.tets.vertex(t);
+        sum += collapse_of(d, v[0], v[1], v[2], v[3]);
+    }
+    return sum / d.tets.size();
+}
+
+TEST(Relaxation, KeepsTheDomainAndRaisesTheMean) {
+    Refined r = refined_cube();
+    ASSERT_EQ(r.sizes.size(), r.domain.point_count());
+    const index_t fixed = r.recovered.point_count();
+    ASSERT_GT(r.domain.point_count(), fixed + 400) << "the fixture should have hundreds of interior points";
+    const std::vector<double> fixed_xyz(r.domain.xyz.begin(), r.domain.xyz.begin() + 3 * std::size_t{fixed});
+    const double volume = domain_volume(r.domain);
+    const double before = mean_collapse(r.domain);
+    const index_t points_before = r.domain.point_count();
+
+    RelaxationOptions o;
+    o.threads = 2;
+    o.partitions = 2;
+    const RelaxationStats s = relax_points(r.domain, r.recovered, r.sizes, o);
+    const double after = mean_collapse(r.domain);
+    std::printf("relaxation: %llu moves, %u dropped, mean collapse %.4f -> %.4f, %.3f s\n",
+                (unsigned long long)s.moves, s.dropped, before, after, s.seconds);
+    EXPECT_EQ(s.iterations, 2);
+    EXPECT_GT(s.moves, points_before - fixed) << "most points move in each iteration";
+    expect_valid(r.domain, r.domain.front);
+    EXPECT_NEAR(domain_volume(r.domain), volume, 1e-9 * volume);
+    EXPECT_EQ(r.domain.point_count(), points_before - s.dropped);
+    EXPECT_LE(s.dropped, (points_before - fixed) / 1000);
+    EXPECT_TRUE(std::equal(fixed_xyz.begin(), fixed_xyz.end(), r.domain.xyz.begin())) << "a fixed point moved";
+    // The Delaunay tets of the relaxed points, before any optimisation (measured 0.614 -> 0.660).
+    EXPECT_GT(after, before + 0.015);
+}
+
+TEST(Relaxation, SameMeshForOneAndTwoThreads) {
+    const auto run = [](unsigned threads) {
+        Refined r = refined_cube();
+        RelaxationOptions o;
+        o.threads = threads;
+        o.partitions = 2;
+        relax_points(r.domain, r.recovered, r.sizes, o);
+        return std::move(r.domain);
+    };
+    const TetDomain a = run(2), b = run(1);
+    EXPECT_EQ(a.xyz, b.xyz);
+    ASSERT_EQ(a.tets.size(), b.tets.size());
+    EXPECT_TRUE(std::equal(a.tets.vertices().begin(), a.tets.vertices().end(), b.tets.vertices().begin()));
+    EXPECT_TRUE(std::equal(a.tets.neighbours().begin(), a.tets.neighbours().end(), b.tets.neighbours().begin()));
+}
+
+TEST(Relaxation, NoIterationsLeavesTheDomainAndBadInputThrows) {
+    Refined r = refined_cube();
+    const std::vector<double> xyz = r.domain.xyz;
+    RelaxationOptions o;
+    o.iterations = 0;
+    EXPECT_EQ(relax_points(r.domain, r.recovered, r.sizes, o).moves, 0u);
+    EXPECT_EQ(r.domain.xyz, xyz);
+    o.iterations = -1;
+    EXPECT_THROW(relax_points(r.domain, r.recovered, r.sizes, o), Error);
+    o.iterations = 1;
+    const std::vector<double> short_sizes(r.sizes.begin(), r.sizes.end() - 1);
+    EXPECT_THROW(relax_points(r.domain, r.recovered, short_sizes, o), Error);
+}
+
+}  // namespace

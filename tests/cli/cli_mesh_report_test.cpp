@@ -87,6 +87,26 @@ TEST(CliMeshReport, CircAndLayersSetTheRingNumbering) {
     }
 }
 
+// --tet-relax sets the tet step's ODT relaxation rounds: none moves no point; the default's
+// relaxed points give a better mean collapse (on the straight pipe 0.805 -> 0.812, measured).
+TEST(CliMeshReport, TetRelaxSetsTheRelaxationRounds) {
+    TempDir dir;
+    const auto tets_counts = [](const nlohmann::json& j) {
+        for (const auto& p : j["phases"]) {
+            if (p["name"] == "tets") return p["counts"];
+        }
+        return nlohmann::json();
+    };
+    const nlohmann::json off = mesh_pipe(dir, "--tet-relax 0").report;
+    const nlohmann::json on = mesh_pipe(dir, "").report;
+    EXPECT_EQ(tets_counts(off)["relaxation moves"].get<double>(), 0.0);
+    EXPECT_GT(tets_counts(on)["relaxation moves"].get<double>(), 0.5 * on["tets"].get<double>() / 6.0);
+    EXPECT_GT(on["quality"]["tet_collapse"]["mean"].get<double>(), off["quality"]["tet_collapse"]["mean"].get<double>());
+    const auto bad = run_command(cli() + " mesh --tet-relax 17 -o " + q(dir / "x.msh"));
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.msh"));
+}
+
 TEST(CliMeshReport, MshHoldsPipeFaceAndVolumeGroups) {
     TempDir dir;
     const Meshed m = mesh_pipe(dir, "");
@@ -109,7 +129,9 @@ TEST(CliMeshReport, PlainProgressLinesWhenNotATerminal) {
         const std::string line = std::string("progress: ") + phase + " ";
         const std::size_t at = r.out.find(line);
         EXPECT_NE(at, std::string::npos) << phase << "\n" << r.out;
-        if (at != std::string::npos) EXPECT_EQ(r.out.find(line, at + 1), std::string::npos) << phase << "\n" << r.out;
+        if (at != std::string::npos) {
+            EXPECT_EQ(r.out.find(line, at + 1), std::string::npos) << phase << "\n" << r.out;
+        }
     }
     EXPECT_EQ(r.out.find('\r'), std::string::npos);  // no terminal control in a log
     EXPECT_NE(r.out.find("Total time"), std::string::npos);

@@ -156,6 +156,17 @@ private:
     }
 
     bool insert_steiner(const Target& g) {
+        // First the shell of a crossing edge, or of a crossed face's edge, whose ring holds both
+        // ends of a segment target, rebuilt around the segment: on a flat front, where that edge
+        // is the target's other diagonal, the points below (joined to that shell only) just
+        // move the crossing until the limit (swap_shell_to_segment).
+        if (g.is_edge()) {
+            std::vector<std::pair<index_t, index_t>> around = cx_.edges;
+            const auto more = face_edges();
+            around.insert(around.end(), more.begin(), more.end());
+            for (const auto& [p, q] : around)
+                if (swap_shell_to_segment(m_, p, q, g, locks_, steiner)) return true;
+        }
         std::vector<index_t> ring_tets, ring;
         std::vector<std::pair<index_t, index_t>> edges = cx_.edges;
         const auto more = face_edges();

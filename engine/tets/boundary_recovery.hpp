@@ -6,8 +6,10 @@
 //     split into tets; engine/delaunay).
 //  2. Every front edge, then every front triangle, made a tet edge / face: flips first (2-3,
 //     and edge removal: 3-2, 4-4, n -> 2n-4), each required not to add an element crossing
-//     the missing one, so every flip makes progress; where no flip helps, a Steiner point on
-//     an interior edge or inside a pair of tets (never on the front). The front itself is
+//     the missing one, so every flip makes progress; where no flip helps, the shell of an edge
+//     whose ring holds both ends of a missing front edge rebuilt around it (with a new point
+//     on either side where needed: a flat front face's other diagonal), else a Steiner point
+//     on an interior edge or inside a pair of tets (never on the front). The front itself is
 //     never changed. Steiner points are removed again by contraction where that leaves
 //     positive tets.
 //  3. The tets on the outer side of the front (outside the solid, inside rings and pyramids)

@@ -1,6 +1,7 @@
 #include "engine/tets/recovery_flips.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "engine/mesh/hybrid_mesh.hpp"
@@ -125,6 +126,134 @@ index_t insert_point(RecoveryMesh& m, std::span<const index_t> cavity, const dou
     for (const auto& fv : faces) out.push_back({fv[1], fv[0], fv[2], s});
     if (!m.replace(cavity, out)) throw Error("boundary recovery: internal error, a cavity is not a ball");
     return s;
+}
+
+namespace {
+
+// The apex id of a cone that is a new point, not yet in the mesh.
+constexpr index_t kNewPoint = kNoIndex;
+
+// Tet t is positive, with vertex kNewPoint at `at`.
+bool positive_with(const RecoveryMesh& m, const Tet& t, const double* at) {
+    std::array<const double*, 4> x;
+    for (int i = 0; i < 4; ++i) x[i] = t[i] == kNewPoint ? at : m.point(t[i]);
+    return orient3d(x[0], x[1], x[2], x[3]) > 0;
+}
+
+// One half of the shell of edge pq in swap_shell_to_segment: the tets (p, q, arc[i], arc[i+1]),
+// arc running along pq's ring from one end of the segment (arc.front()) to the other. Appends
+// the tets coning the half's boundary from apex c (a point of the arc, or kNewPoint at `at`):
+// its faces at p and at q (c in place of q, then of p, in the old tets), and the triangles
+// (s, t, p) and (s, t, q) of the segment st that cut the shell in two, oriented to pair with
+// the faces at p and q. False when a tet is not positive (c outside the half's kernel),
+// leaving `out` as it was.
+bool cone_half(const RecoveryMesh& m, index_t p, index_t q, std::span<const index_t> arc, index_t c,
+               const double* at, std::vector<Tet>& out) {
+    const std::size_t size = out.size();
+    for (std::size_t i = 0; i + 1 < arc.size(); ++i) {
+        if (arc[i] == c || arc[i + 1] == c) continue;
+        out.push_back({p, c, arc[i], arc[i + 1]});
+        out.push_back({c, q, arc[i], arc[i + 1]});
+    }
+    out.push_back({arc.back(), arc.front(), p, c});
+    out.push_back({arc.front(), arc.back(), q, c});
+    for (std::size_t i = size; i < out.size(); ++i)
+        if (!positive_with(m, out[i], at)) {
+            out.resize(size);
+            return false;
+        }
+    return true;
+}
+
+// x + t d.
+std::array<double, 3> along(const double* x, const std::array<double, 3>& d, double t) {
+    return {x[0] + t * d[0], x[1] + t * d[1], x[2] + t * d[2]};
+}
+
+// Cones the half from one of its own ring points when that works (no new point), else from a
+// new point off the cut, on the half's side: first from the cut's centre towards the half's
+// ring points (a well-shaped apex), then ever closer to the cut, above the middle of pq (tets
+// (p, q, ...) are positive, so points near pq see every face at p and q) and above the cut's
+// centre. The apex, or kNewPoint with its coordinates in `at`; false when none works.
+bool cone_half_somewhere(const RecoveryMesh& m, index_t p, index_t q, std::span<const index_t> arc,
+                         std::vector<Tet>& out, index_t& apex, std::array<double, 3>& at) {
+    apex = kNewPoint;
+    for (std::size_t i = 1; i + 1 < arc.size(); ++i)
+        if (cone_half(m, p, q, arc, arc[i], nullptr, out)) {
+            apex = arc[i];
+            return true;
+        }
+    const double *s = m.point(arc.front()), *t = m.point(arc.back()), *ps = m.point(p), *qs = m.point(q);
+    std::array<double, 3> centre, mid, towards{}, normal;
+    for (int k = 0; k < 3; ++k) {
+        centre[k] = (s[k] + t[k] + ps[k] + qs[k]) / 4;
+        mid[k] = (ps[k] + qs[k]) / 2;
+        for (std::size_t i = 1; i + 1 < arc.size(); ++i)
+            towards[k] += m.point(arc[i])[k] / static_cast<double>(arc.size() - 2);
+        towards[k] -= centre[k];
+    }
+    // The cut's normal (st x pq), towards the half, as long as st.
+    const double u[3] = {t[0] - s[0], t[1] - s[1], t[2] - s[2]}, v[3] = {qs[0] - ps[0], qs[1] - ps[1], qs[2] - ps[2]};
+    normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double dot = normal[0] * towards[0] + normal[1] * towards[1] + normal[2] * towards[2];
+    const double len = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    const double ulen = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (len == 0) return false;
+    for (double& x : normal) x *= (dot < 0 ? -ulen : ulen) / len;
+    std::vector<std::array<double, 3>> cands = {along(centre.data(), towards, 0.5),
+                                                along(centre.data(), towards, 0.25)};
+    for (double h : {0.25, 0.1, 0.02, 0.005})
+        for (const auto& x : {mid, centre}) cands.push_back(along(x.data(), normal, h));
+    for (const auto& c : cands)
+        if (cone_half(m, p, q, arc, kNewPoint, c.data(), out)) {
+            at = c;
+            return true;
+        }
+    return false;
+}
+
+}  // namespace
+
+bool swap_shell_to_segment(RecoveryMesh& m, index_t p, index_t q, const Target& target, const FrontLocks& locks,
+                           std::vector<index_t>& added) {
+    if (!target.is_edge() || target.has(p) || target.has(q) || locks.edge(p, q)) return false;
+    std::vector<index_t> tets, ring;
+    if (!m.edge_ring(p, q, tets, ring)) return false;
+    const std::size_t n = ring.size();
+    const auto ia = std::find(ring.begin(), ring.end(), target.a), ib = std::find(ring.begin(), ring.end(), target.b);
+    if (ia == ring.end() || ib == ring.end()) return false;
+    for (index_t r : ring)
+        if (locks.face(p, q, r)) return false;
+    const auto arc = [&](std::size_t from, std::size_t to) {
+        std::vector<index_t> out{ring[from]};
+        for (std::size_t i = from; i != to;) {
+            i = (i + 1) % n;
+            out.push_back(ring[i]);
+        }
+        return out;
+    };
+    const std::size_t i = static_cast<std::size_t>(ia - ring.begin()), j = static_cast<std::size_t>(ib - ring.begin());
+    const std::vector<index_t> halves[2] = {arc(i, j), arc(j, i)};
+    // a and b next to each other in the ring: the tet (p, q, a, b) already has edge ab.
+    if (halves[0].size() < 3 || halves[1].size() < 3) return false;
+    std::vector<Tet> out;
+    std::size_t end[2];
+    index_t apex[2];
+    std::array<double, 3> at[2];
+    for (int h = 0; h < 2; ++h) {
+        if (!cone_half_somewhere(m, p, q, halves[h], out, apex[h], at[h])) return false;
+        end[h] = out.size();
+    }
+    // Valid: the new points join the mesh, each in place of its half's placeholder.
+    for (int h = 0; h < 2; ++h) {
+        if (apex[h] != kNewPoint) continue;
+        const index_t s = m.add_point(at[h].data());
+        for (std::size_t k = h == 0 ? 0 : end[0]; k < end[h]; ++k)
+            std::replace(out[k].begin(), out[k].end(), kNewPoint, s);
+        added.push_back(s);
+    }
+    if (!m.replace(tets, out)) throw Error("boundary recovery: internal error, a shell swap does not fill the shell");
+    return true;
 }
 
 bool contract_point(RecoveryMesh& m, index_t s) {

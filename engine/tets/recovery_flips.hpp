@@ -61,6 +61,18 @@ bool remove_edge(RecoveryMesh& m, index_t u, index_t v, const Target* target, co
 // positive or a face inside the cavity is locked.
 index_t insert_point(RecoveryMesh& m, std::span<const index_t> cavity, const double* p, const FrontLocks& locks);
 
+// Replaces the shell of edge pq, whose ring holds both ends a, b of the target segment, by
+// tets around ab: the triangles (a, b, p) and (a, b, q) cut the shell in two, and each half
+// is coned from one of its ring points, or from a new point inside it when none will do (the
+// new points, at most 2, go to `added`). This is where flips run out on a flat front: when pq
+// is ab's other diagonal in two coplanar front triangles, a ring point is often coplanar with
+// p or q and a neighbour (the next front face at a front corner, a plane of a grid), so every
+// triangulation of the ring needs a flat tet; and Steiner points off the plane, not joined to
+// ab, only move the crossing. Changes nothing and returns false when pq or a face at pq is
+// locked, a or b is not in pq's ring, or no apex gives positive tets.
+bool swap_shell_to_segment(RecoveryMesh& m, index_t p, index_t q, const Target& target, const FrontLocks& locks,
+                           std::vector<index_t>& added);
+
 // Removes vertex s by moving it onto the neighbour that leaves the best smallest tet
 // collapse measure, if any move leaves only positive tets. Faces not containing s survive,
 // so front faces and edges are never touched.

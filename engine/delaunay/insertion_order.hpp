@@ -16,7 +16,8 @@ std::uint64_t hilbert_key(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz, 
 
 // The order of the points (3 coordinates each) along the Hilbert curve on a 2^16 grid over
 // their bounding cube, equal keys in input order: indices into the points. For a batch of
-// points inserted into an existing mesh, so that each kernel part walks along one stretch.
+// points inserted into an existing mesh: consecutive points are close, so each walk from the
+// previous insertion is short.
 std::vector<index_t> curve_order(std::span<const double> xyz);
 
 struct InsertionOrder {

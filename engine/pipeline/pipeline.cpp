@@ -215,9 +215,11 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
                 {"front faces recovered", double(s.recovery.missing_faces)},
                 {"steiner points kept", double(s.recovery.steiner_kept)},
                 {"refinement rounds", double(s.refine.rounds)},
-                // ODT relaxation: moves over all its iterations, and the points it could not
-                // insert again (removed).
+                // ODT relaxation: rounds, moves over all of them, the points whose reinsertion
+                // needed a second walk, and the points it could not insert again (removed).
+                {"relaxation rounds", double(s.relaxation.iterations)},
                 {"relaxation moves", double(s.relaxation.moves)},
+                {"relaxation second walks", double(s.relaxation.second_walks)},
                 {"relaxation points dropped", double(s.relaxation.dropped)},
                 {"flips", double(s.optimise.flips23 + s.optimise.flips32 + s.optimise.flips44 + s.optimise.edge_removals)},
                 {"smoothing moves", double(s.optimise.moves)},

@@ -97,11 +97,13 @@ public:
     Recovery(RecoveryMesh& m, FrontLocks& locks, const RecoveryOptions& o, index_t input_points)
         : m_(m), locks_(locks), opt_(o), input_points_(input_points) {}
 
-    // Makes the target present; returns whether flips alone sufficed.
+    // Makes the target present; returns whether it took no new point (flips, or a shell swap
+    // coned from points already there).
     bool recover(const Target& g) {
-        int steiner = 0;
+        int steiner = 0;  // Steiner steps tried, for the limit
+        const std::size_t points_before = this->steiner.size();
         for (int step = 0; step < opt_.max_steps_per_element; ++step) {
-            if (present(g)) return steiner == 0;
+            if (present(g)) return this->steiner.size() == points_before;
             find_crossings(m_, g, cx_);
             if (cx_.vertex_on_target != kNoIndex) {
                 const index_t w = cx_.vertex_on_target;
@@ -160,17 +162,13 @@ private:
         // ends of a segment target, rebuilt around the segment: on a flat front, where that edge
         // is the target's other diagonal, the points below (joined to that shell only) just
         // move the crossing until the limit (swap_shell_to_segment).
-        if (g.is_edge()) {
-            std::vector<std::pair<index_t, index_t>> around = cx_.edges;
-            const auto more = face_edges();
-            around.insert(around.end(), more.begin(), more.end());
-            for (const auto& [p, q] : around)
-                if (swap_shell_to_segment(m_, p, q, g, locks_, steiner)) return true;
-        }
-        std::vector<index_t> ring_tets, ring;
         std::vector<std::pair<index_t, index_t>> edges = cx_.edges;
         const auto more = face_edges();
         edges.insert(edges.end(), more.begin(), more.end());
+        if (g.is_edge())
+            for (const auto& [p, q] : edges)
+                if (swap_shell_to_segment(m_, p, q, g, locks_, steiner)) return true;
+        std::vector<index_t> ring_tets, ring;
         for (const auto& [p, q] : edges) {
             if (locks_.edge(p, q) || !m_.edge_ring(p, q, ring_tets, ring)) continue;
             // First the centroid of the ring's points (off the edge: on a flat front the edge's

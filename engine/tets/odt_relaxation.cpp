@@ -26,7 +26,8 @@ struct MoveScratch {
 };
 
 // Moves p towards its weighted ODT position: the whole way, or half, or a quarter, whichever
-// first leaves every tet of its star positive. Returns whether it moved.
+// first leaves every tet of its star positive. Returns whether it moved (it stays where it is
+// when it is at its target already).
 bool move_point(TetDomain& dom, index_t p, std::span<const index_t> star, std::span<const double> sizes,
                 MoveScratch& s) {
     gather_star_corners(dom, p, star, s.corners);
@@ -38,6 +39,7 @@ bool move_point(TetDomain& dom, index_t p, std::span<const index_t> star, std::s
     }
     const Vec3 here = point_vec(dom, p);
     const Vec3 target = odt_target(s.corners, here, s.weight);
+    if (target.x == here.x && target.y == here.y && target.z == here.z) return false;
     for (double step : {1.0, 0.5, 0.25}) {
         const Vec3 x = here + step * (target - here);
         if (!none_inverted(dom, p, star, x)) continue;
@@ -50,24 +52,10 @@ bool move_point(TetDomain& dom, index_t p, std::span<const index_t> star, std::s
     return false;
 }
 
-// One sweep of moves over the free points (ids >= fixed), colour by colour. Also sets seed[p] for
-// every free point: a recovered tet at a fixed point of p's star, if it has one (fixed_tet).
-std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes,
-                          std::span<const index_t> fixed_tet, std::vector<index_t>& seed) {
+// One sweep of moves over the free points (ids >= fixed), colour by colour.
+std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes) {
     const Incidence inc = build_incidence(dom);
     const index_t n = dom.point_count();
-    seed.assign(n, kNoIndex);
-    tbb::parallel_for(tbb::blocked_range<index_t>(fixed, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
-        for (index_t p = r.begin(); p != r.end(); ++p)
-            for (index_t t : inc.of(p)) {
-                const index_t* v = dom.tets.vertex(t);
-                const index_t* f = std::find_if(v, v + 4, [&](index_t u) { return u < fixed; });
-                if (f != v + 4) {
-                    seed[p] = fixed_tet[*f];
-                    break;
-                }
-            }
-    });
     std::vector<index_t> todo;
     for (index_t p = fixed; p < n; ++p)
         if (!inc.of(p).empty()) todo.push_back(p);
@@ -88,10 +76,12 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 }
 
 // Inserts the free points of `dom` again into a copy of the recovered mesh and makes the result
-// dom's tets. The kernel walks from the previous insertion; where that runs into the front (a
-// concave part of it), it starts again from seed[p] (move_points). Points it cannot insert,
-// even on the second try below, are left without tets.
-void reinsert(TetDomain& dom, const TetDomain& recovered, std::span<const index_t> seed, unsigned parts) {
+// dom's tets. Each walk starts from the previous insertion. A walk that runs into the front (a
+// concave part of it) gets the point blocked; those points get one more walk once the others
+// are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
+// so the way between them is short and inside the region. Points that fail that too (none on
+// the reference cases) are left without tets. Returns how many needed the second walk.
+index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
     const index_t fixed = recovered.point_count(), n = dom.point_count();
     std::vector<index_t> used;
     used.reserve(n - fixed);
@@ -107,7 +97,6 @@ void reinsert(TetDomain& dom, const TetDomain& recovered, std::span<const index_
     std::vector<index_t> ids(n - fixed);
     for (index_t p = fixed; p < n; ++p) ids[p - fixed] = p;
     tri.add_points(std::span<const double>(dom.xyz).subspan(std::size_t{3} * fixed), ids);
-    for (index_t p : used) tri.set_walk_start(p, seed[p]);
     std::vector<double> used_xyz(3 * used.size());
     for (std::size_t i = 0; i < used.size(); ++i) std::copy_n(dom.point(used[i]), 3, used_xyz.begin() + 3 * i);
     std::vector<index_t> order = delaunay::curve_order(used_xyz);
@@ -115,10 +104,6 @@ void reinsert(TetDomain& dom, const TetDomain& recovered, std::span<const index_
     tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
     constexpr index_t kMinPointsPerPart = 64;
     tri.insert(order, parts, kMinPointsPerPart);
-    // A walk that ran into the front with no fixed point near to start again from (a point
-    // whose old star had none) gets one more try, from a tet of the new mesh at one of the
-    // point's old neighbours: the two shared a tet, so the way between them is short and
-    // inside the region.
     const std::vector<index_t> blocked = tri.blocked();
     if (!blocked.empty()) {
         std::vector<std::uint8_t> is_blocked(n, 0);
@@ -149,6 +134,7 @@ void reinsert(TetDomain& dom, const TetDomain& recovered, std::span<const index_
         tri.insert(blocked, 1, kMinPointsPerPart);
     }
     dom.tets = tri.finish();
+    return static_cast<index_t>(blocked.size());
 }
 
 }  // namespace
@@ -165,16 +151,12 @@ RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std:
     if (options.iterations == 0) return stats;
     const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
     const unsigned parts = options.partitions ? options.partitions : threads;
-    // A recovered tet at each fixed point: where a walk to a point near it can start again.
-    std::vector<index_t> fixed_tet(fixed, kNoIndex), seed;
-    for (index_t t = recovered.tets.size(); t-- > 0;)
-        for (int i = 0; i < 4; ++i) fixed_tet[recovered.tets.vertex(t)[i]] = t;
     tbb::task_arena arena(static_cast<int>(threads));
     arena.execute([&] {
         for (int it = 0; it < options.iterations; ++it) {
             ++stats.iterations;
-            stats.moves += move_points(domain, fixed, sizes, fixed_tet, seed);
-            reinsert(domain, recovered, seed, parts);
+            stats.moves += move_points(domain, fixed, sizes);
+            stats.second_walks += reinsert(domain, recovered, parts);
         }
     });
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither

@@ -43,17 +43,19 @@ struct RelaxationOptions {
 
 struct RelaxationStats {
     int iterations = 0;
-    std::uint64_t moves = 0;  // accepted point moves over all iterations
-    index_t dropped = 0;      // points the kernel could not insert again (removed, ids compacted)
+    std::uint64_t moves = 0;   // point moves over all iterations
+    index_t second_walks = 0;  // reinsertions whose first walk ran into the front
+    index_t dropped = 0;       // points the kernel could not insert again (removed, ids compacted)
     double seconds = 0;
 };
 
 // `recovered`: the domain as boundary recovery left it (before refinement); its points are the
 // first points of `domain` and its tets fill the same region. `sizes`: the target size at each
 // point of `domain` by id (point_sizes), read as the density's h; a point keeps its size when
-// it moves (it moves by less than its h, and the field grows by at most g - 1 per unit length).
+// it moves (within its star, so by about its h at most, and the field grows by at most g - 1
+// per unit length).
 // `domain` keeps its invariants (tet_domain.hpp); the points the kernel skips on reinsertion
-// (none on the reference meshes, a few per 10^5 on others) are removed and the later ids moved
+// (none on the reference meshes or the test cube) are removed and the later ids moved
 // down, in order.
 RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
                              const RelaxationOptions& options = {});

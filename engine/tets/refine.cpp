@@ -53,7 +53,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             if (keep.empty()) break;
             std::vector<double> kept_xyz(3 * keep.size());
             for (std::size_t i = 0; i < keep.size(); ++i) std::copy_n(cand[keep[i]].p, 3, kept_xyz.begin() + 3 * i);
-            // Along the Hilbert curve over the batch: each kernel part walks along one stretch.
+            // Along the Hilbert curve over the batch: each walk starts near its point.
             const std::vector<index_t> along = delaunay::curve_order(kept_xyz);
             std::vector<Candidate> batch(keep.size());
             for (std::size_t i = 0; i < keep.size(); ++i) batch[i] = cand[keep[along[i]]];

@@ -5,6 +5,15 @@
 
 namespace tubemesh::tets {
 
+TetDomain copy_of(const TetDomain& d) {
+    TetDomain c;
+    c.xyz = d.xyz;
+    c.front_points = d.front_points;
+    c.tets = d.tets.clone();
+    c.front = d.front;
+    return c;
+}
+
 std::vector<index_t> drop_unused_points(TetDomain& d, index_t first) {
     const index_t n = d.point_count();
     std::vector<std::uint8_t> used(n, 0);

@@ -35,6 +35,9 @@ struct TetDomain {
     const double* point(index_t p) const { return xyz.data() + std::size_t{3} * p; }
 };
 
+// A copy (TetStore has no copy constructor, so that a large copy is always asked for by name).
+TetDomain copy_of(const TetDomain& d);
+
 // Removes the points from `first` on that no tet uses (the ones a kernel run skipped) and moves
 // the later ones down, in order; points before `first` keep their ids. Returns the old -> new
 // id map (kNoIndex for a removed point).

@@ -43,11 +43,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     TetDomain domain = recover_boundary(xyz, local, ro, &stats.recovery);
     // The relaxation inserts the interior points again into this mesh.
     TetDomain recovered;
-    if (options.relaxation.iterations > 0) {
-        recovered.xyz = domain.xyz;
-        recovered.front_points = domain.front_points;
-        recovered.tets = domain.tets.clone();
-    }
+    if (options.relaxation.iterations > 0) recovered = copy_of(domain);
     if (options.part_done) options.part_done();
 
     ControlSpaceOptions co;

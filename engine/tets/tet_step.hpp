@@ -49,8 +49,8 @@ struct TetStepOptions {
     RefineOptions refine;      // likewise
     RelaxationOptions relaxation;  // likewise
     OptimiseOptions optimise;  // likewise for threads
-    // Called after each of the three parts (recovery, refinement, optimisation), for progress
-    // reports; may be empty. The mesh does not depend on it.
+    // Called after each of the three parts (recovery, refinement with the relaxation,
+    // optimisation), for progress reports; may be empty. The mesh does not depend on it.
     std::function<void()> part_done;
 };
 

@@ -11,12 +11,14 @@
 
 #include "engine/predicates/predicates.hpp"
 #include "engine/tets/boundary_recovery.hpp"
+#include "tests/support/tet_domain_checks.hpp"
 
 namespace {
 
 using namespace tubemesh;
 using tubemesh::tets::RecoveryStats;
 using tubemesh::tets::TetDomain;
+using tubemesh::testing::box_front;
 
 struct Front {
     std::vector<double> xyz;
@@ -86,51 +88,15 @@ void expect_valid_domain(const Front& f, const TetDomain& d) {
     }
 }
 
-// A closed box surface [x0,x1]x[y0,y1]x[z0,z1] with n x n quads per face, each split in two.
-void add_box(Front& f, const double lo[3], const double hi[3], int n, bool inward, std::map<std::array<long, 3>, index_t>& ids) {
-    auto point = [&](const double p[3]) {
-        const std::array<long, 3> key = {std::lround(p[0] * 1e6), std::lround(p[1] * 1e6), std::lround(p[2] * 1e6)};
-        auto it = ids.find(key);
-        if (it != ids.end()) return it->second;
-        const index_t id = f.add(p[0], p[1], p[2]);
-        ids[key] = id;
-        return id;
-    };
-    for (int axis = 0; axis < 3; ++axis)
-        for (int side = 0; side < 2; ++side) {
-            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-            for (int i = 0; i < n; ++i)
-                for (int j = 0; j < n; ++j) {
-                    index_t q[4];
-                    const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
-                    for (int k = 0; k < 4; ++k) {
-                        double p[3];
-                        p[axis] = side ? hi[axis] : lo[axis];
-                        p[u] = lo[u] + (hi[u] - lo[u]) * (i + di[k]) / n;
-                        p[w] = lo[w] + (hi[w] - lo[w]) * (j + dj[k]) / n;
-                        q[k] = point(p);
-                    }
-                    // (u, w, axis) is right-handed: q0 q1 q2 q3 is counter-clockwise seen from +axis.
-                    const bool out_plus = (side == 1) != inward;
-                    const index_t t1[3] = {q[0], q[1], q[2]}, t2[3] = {q[0], q[2], q[3]};
-                    for (const index_t* t : {t1, t2}) {
-                        if (out_plus) f.tris.insert(f.tris.end(), {t[0], t[1], t[2]});
-                        else f.tris.insert(f.tris.end(), {t[0], t[2], t[1]});
-                    }
-                }
-        }
-}
-
-Front box_front(int n) {
+Front cube_surface(int n) {
     Front f;
-    std::map<std::array<long, 3>, index_t> ids;
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 2, 3};
-    add_box(f, lo, hi, n, false, ids);
+    box_front(lo, hi, n, true, f.xyz, f.tris);
     return f;
 }
 
 TEST(TetsRecovery, CubeSurface) {
-    const Front f = box_front(3);
+    const Front f = cube_surface(3);
     RecoveryStats st;
     const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
     expect_valid_domain(f, d);
@@ -141,11 +107,10 @@ TEST(TetsRecovery, CubeSurface) {
 
 TEST(TetsRecovery, BoxWithBoxShapedCavity) {
     Front f;
-    std::map<std::array<long, 3>, index_t> ids;
     const double lo[3] = {0, 0, 0}, hi[3] = {3, 3, 3};
     const double ilo[3] = {1, 1.2, 0.9}, ihi[3] = {2, 1.7, 2.1};
-    add_box(f, lo, hi, 4, false, ids);
-    add_box(f, ilo, ihi, 2, true, ids);
+    box_front(lo, hi, 4, true, f.xyz, f.tris);
+    box_front(ilo, ihi, 2, false, f.xyz, f.tris);
     RecoveryStats st;
     const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
     expect_valid_domain(f, d);
@@ -197,19 +162,19 @@ TEST(TetsRecovery, LongThinTrianglesNeedRecovery) {
 }
 
 TEST(TetsRecovery, OpenFrontIsAnError) {
-    Front f = box_front(2);
+    Front f = cube_surface(2);
     f.tris.resize(f.tris.size() - 3);
     EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris), Error);
 }
 
 TEST(TetsRecovery, InconsistentOrientationIsAnError) {
-    Front f = box_front(2);
+    Front f = cube_surface(2);
     std::swap(f.tris[0], f.tris[1]);
     EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris), Error);
 }
 
 TEST(TetsRecovery, InwardFrontIsAnError) {
-    Front f = box_front(2);
+    Front f = cube_surface(2);
     for (std::size_t i = 0; i < f.tris.size(); i += 3) std::swap(f.tris[i + 1], f.tris[i + 2]);
     EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris), Error);
 }
@@ -225,11 +190,10 @@ class TetsRecoveryGrid : public ::testing::TestWithParam<int> {};
 TEST_P(TetsRecoveryGrid, BoxWithCavityIsRecovered) {
     const int k = GetParam();
     Front f;
-    std::map<std::array<long, 3>, index_t> ids;
     const double lo[3] = {0, 0, 0}, hi[3] = {2 + 0.1 * k, 3, 2.5};
     const double ilo[3] = {0.5 + 0.05 * k, 0.7, 0.4 + 0.03 * k}, ihi[3] = {1.5, 2.2 - 0.04 * k, 1.9};
-    add_box(f, lo, hi, 2 + k, false, ids);
-    add_box(f, ilo, ihi, 1 + k % 4, true, ids);
+    box_front(lo, hi, 2 + k, true, f.xyz, f.tris);
+    box_front(ilo, ihi, 1 + k % 4, false, f.xyz, f.tris);
     RecoveryStats st;
     const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
     expect_valid_domain(f, d);
@@ -245,11 +209,10 @@ namespace {
 
 TEST(TetsRecovery, SameInputGivesSameDomain) {
     Front f;
-    std::map<std::array<long, 3>, index_t> ids;
     const double lo[3] = {0, 0, 0}, hi[3] = {3, 3, 3};
     const double ilo[3] = {1, 1.2, 0.9}, ihi[3] = {2, 1.7, 2.1};
-    add_box(f, lo, hi, 5, false, ids);
-    add_box(f, ilo, ihi, 3, true, ids);
+    box_front(lo, hi, 5, true, f.xyz, f.tris);
+    box_front(ilo, ihi, 3, false, f.xyz, f.tris);
     const TetDomain a = tets::recover_boundary(f.xyz, f.tris);
     const TetDomain b = tets::recover_boundary(f.xyz, f.tris);
     EXPECT_EQ(a.xyz, b.xyz);
@@ -268,10 +231,9 @@ class TetsRecoveryFineHole : public ::testing::TestWithParam<std::pair<int, int>
 
 Front cube_with_hole(int outer, int hole) {
     Front f;
-    std::map<std::array<long, 3>, index_t> ids;
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, hlo[3] = {0.35, 0.35, 0.35}, hhi[3] = {0.65, 0.65, 0.65};
-    add_box(f, lo, hi, outer, false, ids);
-    add_box(f, hlo, hhi, hole, true, ids);
+    box_front(lo, hi, outer, true, f.xyz, f.tris);
+    box_front(hlo, hhi, hole, false, f.xyz, f.tris);
     return f;
 }
 

@@ -23,7 +23,8 @@ std::array<index_t, 3> sorted(index_t a, index_t b, index_t c) {
 
 }  // namespace
 
-void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& xyz, std::vector<index_t>& front) {
+void box_front(const double lo[3], const double hi[3], int n, bool outward, std::vector<double>& xyz,
+               std::vector<index_t>& front) {
     std::map<std::array<long, 3>, index_t> ids;
     const auto id = [&](const double p[3]) {
         const std::array<long, 3> key{std::lround(p[0] * 1e6), std::lround(p[1] * 1e6), std::lround(p[2] * 1e6)};
@@ -40,9 +41,9 @@ void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& 
                     const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
                     for (int k = 0; k < 4; ++k) {
                         double p[3];
-                        p[axis] = side ? hi : lo;
-                        p[a] = lo + (hi - lo) * (i + di[k]) / n;
-                        p[b] = lo + (hi - lo) * (j + dj[k]) / n;
+                        p[axis] = side ? hi[axis] : lo[axis];
+                        p[a] = lo[a] + (hi[a] - lo[a]) * (i + di[k]) / n;
+                        p[b] = lo[b] + (hi[b] - lo[b]) * (j + dj[k]) / n;
                         q[k] = id(p);
                     }
                     // Counter-clockwise in (a, b) points along +axis: outward on the high side.
@@ -55,6 +56,11 @@ void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& 
                     }
                 }
         }
+}
+
+void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& xyz, std::vector<index_t>& front) {
+    const double l[3] = {lo, lo, lo}, h[3] = {hi, hi, hi};
+    box_front(l, h, n, outward, xyz, front);
 }
 
 void expect_valid(const tets::TetDomain& d, const std::vector<index_t>& front) {

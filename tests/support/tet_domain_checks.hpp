@@ -7,9 +7,12 @@
 
 namespace tubemesh::testing {
 
-// A closed front: the grid-triangulated surface of the cube [lo,hi]^3, n cells per edge,
-// normals outward (or inward, for a hole), appended to xyz / front (3 ids per triangle).
-// Points shared between faces are merged.
+// A closed front: the grid-triangulated surface of the box [lo,hi] (n x n cells per face, each
+// split along the diagonal from its first corner), normals outward (or inward, for a hole),
+// appended to xyz / front (3 ids per triangle). Points shared between faces are merged.
+void box_front(const double lo[3], const double hi[3], int n, bool outward, std::vector<double>& xyz,
+               std::vector<index_t>& front);
+// box_front of the cube [lo,hi]^3.
 void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& xyz, std::vector<index_t>& front);
 
 // gtest checks of the domain's invariants: positive tets (exact orient3d), symmetric adjacency

@@ -12,7 +12,7 @@
 
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
-#include "engine/tets/point_colouring.hpp"
+#include "engine/tets/point_colouring.hpp"  // build_incidence
 #include "engine/tets/smoothing.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 
@@ -25,11 +25,12 @@ struct MoveScratch {
     std::vector<double> weight;
 };
 
-// Moves p towards its weighted ODT position: the whole way, or half, or a quarter, whichever
-// first leaves every tet of its star positive. Returns whether it moved (it stays where it is
-// when it is at its target already).
-bool move_point(TetDomain& dom, index_t p, std::span<const index_t> star, std::span<const double> sizes,
-                MoveScratch& s) {
+// Where p goes: towards its weighted ODT position, the whole way, or half, or a quarter,
+// whichever first leaves every tet of its star positive (with the other points where they are),
+// written to `to`. Returns whether it moved (not when it is at its target already, or no step
+// keeps its star positive).
+bool move_point(const TetDomain& dom, index_t p, std::span<const index_t> star, std::span<const double> sizes,
+                MoveScratch& s, double* to) {
     gather_star_corners(dom, p, star, s.corners);
     s.weight.resize(star.size());
     for (std::size_t k = 0; k < star.size(); ++k) {
@@ -43,35 +44,35 @@ bool move_point(TetDomain& dom, index_t p, std::span<const index_t> star, std::s
     for (double step : {1.0, 0.5, 0.25}) {
         const Vec3 x = here + step * (target - here);
         if (!none_inverted(dom, p, star, x)) continue;
-        double* c = dom.xyz.data() + std::size_t{3} * p;
-        c[0] = x.x;
-        c[1] = x.y;
-        c[2] = x.z;
+        to[0] = x.x;
+        to[1] = x.y;
+        to[2] = x.z;
         return true;
     }
     return false;
 }
 
-// One sweep of moves over the free points (ids >= fixed), colour by colour.
+// One sweep of moves over the free points (ids >= fixed), all at once from the old positions
+// (Jacobi, as in Chen and Holst): each point stays inside its old star, so inside the region,
+// whatever its neighbours do, and the tets are built again afterwards, so the old ones need not
+// stay positive. Against moving colour by colour (Gauss-Seidel): the same means within 0.0005
+// on the reference cases, 8-16 % less time, no colouring (2026-12-03).
 std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes) {
     const Incidence inc = build_incidence(dom);
     const index_t n = dom.point_count();
-    std::vector<index_t> todo;
-    for (index_t p = fixed; p < n; ++p)
-        if (!inc.of(p).empty()) todo.push_back(p);
-    std::vector<std::uint32_t> colour(n, kNoIndex);
+    std::vector<double> moved_xyz = dom.xyz;
+    std::vector<std::uint8_t> moved(n, 0);
     tbb::enumerable_thread_specific<MoveScratch> scratch;
+    tbb::parallel_for(tbb::blocked_range<index_t>(fixed, n, 64), [&](const tbb::blocked_range<index_t>& r) {
+        auto& s = scratch.local();
+        for (index_t p = r.begin(); p != r.end(); ++p) {
+            const auto star = inc.of(p);
+            if (!star.empty()) moved[p] = move_point(dom, p, star, sizes, s, moved_xyz.data() + std::size_t{3} * p);
+        }
+    });
+    dom.xyz.swap(moved_xyz);
     std::uint64_t moves = 0;
-    for (const auto& pts : colour_points(dom, inc, todo, colour)) {
-        std::vector<std::uint8_t> moved(pts.size(), 0);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 16),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                              auto& s = scratch.local();
-                              for (std::size_t i = r.begin(); i != r.end(); ++i)
-                                  moved[i] = move_point(dom, pts[i], inc.of(pts[i]), sizes, s);
-                          });
-        for (std::uint8_t m : moved) moves += m;
-    }
+    for (std::uint8_t m : moved) moves += m;
     return moves;
 }
 

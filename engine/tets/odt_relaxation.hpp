@@ -8,12 +8,12 @@
 // free point to its star's size-weighted ODT position (the mean of the star's circumcentres,
 // each tet weighted by its volume / h^3, h the mean target size at its corners: Chen and Holst's
 // optimal Delaunay triangulation with the point density of the size field, as in Alliez et al.
-// 2005), kept only as far as no tet of its star inverts, and then inserts all free points again
-// into the recovered front mesh: the tets become the constrained Delaunay tets of the moved
-// points (figures at RelaxationOptions::iterations).
+// 2005), kept only as far as no tet of its star inverts (its neighbours where they were), and
+// then inserts all free points again into the recovered front mesh: the tets become the
+// constrained Delaunay tets of the moved points (figures at RelaxationOptions::iterations).
 //
-// Parallel and deterministic: moves go colour by colour (no two points of a colour share a tet,
-// point_colouring.hpp), and the insertion runs the Delaunay kernel with a fixed part count.
+// Parallel and deterministic: every point's move is computed from the positions before the
+// round, and the insertion runs the Delaunay kernel with a fixed part count.
 // Points [0, recovered.point_count()) (the front's and recovery's Steiner points) never move.
 #include <cstdint>
 #include <span>

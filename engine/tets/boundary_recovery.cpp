@@ -39,10 +39,16 @@ struct ReaderScratch {
     SlotMarks marks;
 };
 
-bool is_present(const RecoveryMesh& m, const Target& g, ReaderScratch& s) {
-    if (g.is_edge()) return m.find_edge(g.a, g.b, s.around, s.marks) != kNoIndex;
-    const RecoveryMesh::FaceSides sides = m.find_face(g.a, g.b, g.c, s.around, s.marks);
+// Whether the target is a tet edge / face, given the ball of its first point g.a.
+bool present_in(const RecoveryMesh& m, const Target& g, std::span<const index_t> ball_of_a) {
+    if (g.is_edge()) return m.edge_in(ball_of_a, g.b) != kNoIndex;
+    const RecoveryMesh::FaceSides sides = m.face_in(ball_of_a, g.a, g.b, g.c);
     return sides.tet[0] != kNoIndex || sides.tet[1] != kNoIndex;
+}
+
+bool is_present(const RecoveryMesh& m, const Target& g, ReaderScratch& s) {
+    m.ball(g.a, s.around, s.marks);
+    return present_in(m, g, s.around);
 }
 
 // f(i, ball of first[i]) for every i, in parallel, with the mesh only read meanwhile. The
@@ -80,15 +86,7 @@ std::vector<std::uint8_t> present_now(const RecoveryMesh& m, const std::vector<T
     std::vector<std::uint8_t> out(targets.size(), 0);
     std::vector<index_t> first(targets.size());
     for (std::size_t i = 0; i < targets.size(); ++i) first[i] = targets[i].a;
-    with_ball_of_first(m, first, [&](index_t i, std::span<const index_t> ball) {
-        const Target& g = targets[i];
-        if (g.is_edge()) {
-            out[i] = m.edge_in(ball, g.b) != kNoIndex;
-        } else {
-            const RecoveryMesh::FaceSides sides = m.face_in(ball, g.a, g.b, g.c);
-            out[i] = sides.tet[0] != kNoIndex || sides.tet[1] != kNoIndex;
-        }
-    });
+    with_ball_of_first(m, first, [&](index_t i, std::span<const index_t> ball) { out[i] = present_in(m, targets[i], ball); });
     return out;
 }
 

@@ -1,11 +1,11 @@
 #include "engine/tets/recovery_flips.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/topology.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/tets/ring_triangulation.hpp"
@@ -16,8 +16,14 @@ using predicates::orient3d;
 
 namespace {
 
-bool positive(const RecoveryMesh& m, const Tet& t) {
-    return orient3d(m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])) > 0;
+// The apex id of a cone that is a new point, not yet in the mesh (swap_shell_to_segment).
+constexpr index_t kNewPoint = kNoIndex;
+
+// Tet t is positive; a vertex kNewPoint stands for the point `at`.
+bool positive(const RecoveryMesh& m, const Tet& t, const double* at = nullptr) {
+    std::array<const double*, 4> x;
+    for (int i = 0; i < 4; ++i) x[i] = t[i] == kNewPoint ? at : m.point(t[i]);
+    return orient3d(x[0], x[1], x[2], x[3]) > 0;
 }
 
 double collapse(const RecoveryMesh& m, const Tet& t) {
@@ -130,16 +136,6 @@ index_t insert_point(RecoveryMesh& m, std::span<const index_t> cavity, const dou
 
 namespace {
 
-// The apex id of a cone that is a new point, not yet in the mesh.
-constexpr index_t kNewPoint = kNoIndex;
-
-// Tet t is positive, with vertex kNewPoint at `at`.
-bool positive_with(const RecoveryMesh& m, const Tet& t, const double* at) {
-    std::array<const double*, 4> x;
-    for (int i = 0; i < 4; ++i) x[i] = t[i] == kNewPoint ? at : m.point(t[i]);
-    return orient3d(x[0], x[1], x[2], x[3]) > 0;
-}
-
 // One half of the shell of edge pq in swap_shell_to_segment: the tets (p, q, arc[i], arc[i+1]),
 // arc running along pq's ring from one end of the segment (arc.front()) to the other. Appends
 // the tets coning the half's boundary from apex c (a point of the arc, or kNewPoint at `at`):
@@ -158,16 +154,11 @@ bool cone_half(const RecoveryMesh& m, index_t p, index_t q, std::span<const inde
     out.push_back({arc.back(), arc.front(), p, c});
     out.push_back({arc.front(), arc.back(), q, c});
     for (std::size_t i = size; i < out.size(); ++i)
-        if (!positive_with(m, out[i], at)) {
+        if (!positive(m, out[i], at)) {
             out.resize(size);
             return false;
         }
     return true;
-}
-
-// x + t d.
-std::array<double, 3> along(const double* x, const std::array<double, 3>& d, double t) {
-    return {x[0] + t * d[0], x[1] + t * d[1], x[2] + t * d[2]};
 }
 
 // Cones the half from one of its own ring points when that works (no new point), else from a
@@ -183,32 +174,30 @@ bool cone_half_somewhere(const RecoveryMesh& m, index_t p, index_t q, std::span<
             apex = arc[i];
             return true;
         }
-    const double *s = m.point(arc.front()), *t = m.point(arc.back()), *ps = m.point(p), *qs = m.point(q);
-    std::array<double, 3> centre, mid, towards{}, normal;
-    for (int k = 0; k < 3; ++k) {
-        centre[k] = (s[k] + t[k] + ps[k] + qs[k]) / 4;
-        mid[k] = (ps[k] + qs[k]) / 2;
-        for (std::size_t i = 1; i + 1 < arc.size(); ++i)
-            towards[k] += m.point(arc[i])[k] / static_cast<double>(arc.size() - 2);
-        towards[k] -= centre[k];
-    }
+    const auto vec = [&](index_t v) {
+        const double* x = m.point(v);
+        return Vec3{x[0], x[1], x[2]};
+    };
+    const Vec3 s = vec(arc.front()), t = vec(arc.back()), ps = vec(p), qs = vec(q);
+    const Vec3 centre = 0.25 * (s + t + ps + qs), mid = 0.5 * (ps + qs);
+    Vec3 towards{0, 0, 0};
+    for (std::size_t i = 1; i + 1 < arc.size(); ++i) towards = towards + vec(arc[i]);
+    towards = (1.0 / static_cast<double>(arc.size() - 2)) * towards - centre;
     // The cut's normal (st x pq), towards the half, as long as st.
-    const double u[3] = {t[0] - s[0], t[1] - s[1], t[2] - s[2]}, v[3] = {qs[0] - ps[0], qs[1] - ps[1], qs[2] - ps[2]};
-    normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    const double dot = normal[0] * towards[0] + normal[1] * towards[1] + normal[2] * towards[2];
-    const double len = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-    const double ulen = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    Vec3 normal = cross(t - s, qs - ps);
+    const double len = norm(normal);
     if (len == 0) return false;
-    for (double& x : normal) x *= (dot < 0 ? -ulen : ulen) / len;
-    std::vector<std::array<double, 3>> cands = {along(centre.data(), towards, 0.5),
-                                                along(centre.data(), towards, 0.25)};
+    normal = ((dot(normal, towards) < 0 ? -norm(t - s) : norm(t - s)) / len) * normal;
+    std::vector<Vec3> cands = {centre + 0.5 * towards, centre + 0.25 * towards};
     for (double h : {0.25, 0.1, 0.02, 0.005})
-        for (const auto& x : {mid, centre}) cands.push_back(along(x.data(), normal, h));
-    for (const auto& c : cands)
-        if (cone_half(m, p, q, arc, kNewPoint, c.data(), out)) {
-            at = c;
+        for (const Vec3& x : {mid, centre}) cands.push_back(x + h * normal);
+    for (const Vec3& c : cands) {
+        const double x[3] = {c.x, c.y, c.z};
+        if (cone_half(m, p, q, arc, kNewPoint, x, out)) {
+            at = {c.x, c.y, c.z};
             return true;
         }
+    }
     return false;
 }
 

@@ -118,12 +118,6 @@ std::array<index_t, 3> RecoveryMesh::face(index_t t, int f) const {
     return {v[node[0]], v[node[1]], v[node[2]]};
 }
 
-RecoveryMesh::FaceSides RecoveryMesh::find_face(index_t a, index_t b, index_t c, std::vector<index_t>& around,
-                                                SlotMarks& marks) const {
-    ball(a, around, marks);
-    return face_in(around, a, b, c);
-}
-
 // The first tet found on each side: a face of a valid mesh has at most one there, and ball()
 // lists a vertex's tets in one fixed order, so the answer is the same however it is reached.
 RecoveryMesh::FaceSides RecoveryMesh::face_in(std::span<const index_t> ball_of_a, index_t a, index_t b,

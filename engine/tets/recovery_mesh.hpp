@@ -31,7 +31,7 @@ using Tet = std::array<index_t, 4>;
 
 // Epoch marks on tet slots for traversals: next() invalidates every mark. The mesh keeps its own
 // for its modifications; a thread that reads the mesh while others do (nothing modifies it
-// meanwhile) brings its own to ball, find_edge and find_face.
+// meanwhile) brings its own to ball and find_edge.
 class SlotMarks {
 public:
     std::uint32_t next(index_t slots);  // also grows the marks to `slots`
@@ -79,13 +79,12 @@ public:
         std::array<index_t, 2> tet{kNoIndex, kNoIndex};
         std::array<int, 2> local{-1, -1};
     };
-    FaceSides find_face(index_t a, index_t b, index_t c, std::vector<index_t>& around, SlotMarks& marks) const;
-    // find_edge and find_face given the ball of a (as ball() lists it), for callers that ask
-    // about several edges or faces at a.
+    // The tet with edge ab, and the tets on the sides of face abc, given the ball of a (as
+    // ball() lists it): callers ask about several edges or faces at a from one ball walk.
     index_t edge_in(std::span<const index_t> ball_of_a, index_t b) const;
     FaceSides face_in(std::span<const index_t> ball_of_a, index_t a, index_t b, index_t c) const;
-    // ball and find_edge for concurrent readers (and find_face above), each with its own
-    // scratch (`around`: the ball of a).
+    // ball and find_edge for concurrent readers, each with its own scratch (`around`: the
+    // ball of a).
     void ball(index_t v, std::vector<index_t>& out, SlotMarks& marks) const;
     index_t find_edge(index_t a, index_t b, std::vector<index_t>& around, SlotMarks& marks) const;
 

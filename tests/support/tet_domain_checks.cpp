@@ -11,6 +11,7 @@
 #include "engine/delaunay/tet_store.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/predicates/predicates.hpp"
+#include "engine/tets/boundary_recovery.hpp"
 
 namespace tubemesh::testing {
 namespace {
@@ -61,6 +62,17 @@ void box_front(const double lo[3], const double hi[3], int n, bool outward, std:
 void cube_front(double lo, double hi, int n, bool outward, std::vector<double>& xyz, std::vector<index_t>& front) {
     const double l[3] = {lo, lo, lo}, h[3] = {hi, hi, hi};
     box_front(l, h, n, outward, xyz, front);
+}
+
+tets::TetDomain recovered_cube_with_hole(int hole_cells) {
+    std::vector<double> xyz;
+    std::vector<index_t> front;
+    cube_front(0.0, 1.0, 10, true, xyz, front);
+    cube_front(0.35, 0.65, hole_cells, false, xyz, front);
+    tets::RecoveryOptions ro;
+    ro.threads = 2;
+    ro.partitions = 2;
+    return tets::recover_boundary(xyz, front, ro);
 }
 
 void expect_valid(const tets::TetDomain& d, const std::vector<index_t>& front) {

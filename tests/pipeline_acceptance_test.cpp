@@ -33,11 +33,11 @@ std::string param_name(std::string n) {
 }
 
 // Measured once per process: the tests of one block share one run of the pipeline.
-const CaseFigures& figures(const std::string& name, const geom::BlockSpec& spec) {
+const CaseFigures& figures(const std::string& name, const geom::BlockSpec& spec, const MeshOptions& options = {}) {
     static std::map<std::string, CaseFigures> cache;
     auto it = cache.find(name);
     if (it == cache.end()) {
-        it = cache.emplace(name, measure_case(name, spec)).first;
+        it = cache.emplace(name, measure_case(name, spec, {}, options)).first;
         std::printf("%s", summary(it->second).c_str());
     }
     return it->second;
@@ -65,7 +65,7 @@ std::vector<int> seeds(int first, int last) {
 // ideal apexes and the other ring's layer or the face, so fronts there are rejected by the
 // normal criteria and served by existing nodes, relaxed criteria or try nodes. The layer must
 // still close without self-intersection.
-const CaseFigures& close_pipes_figures(double gap, double height) {
+const CaseFigures& close_pipes_figures(double gap, double height, double apart_factor = PyramidOptions{}.apart_factor) {
     geom::BlockSpec s;
     s.name = "close-pipes";
     s.length_unit = "metre";
@@ -78,12 +78,16 @@ const CaseFigures& close_pipes_figures(double gap, double height) {
         p.points = {{0, y, height}, {3, y, height}};
         s.pipes.push_back(p);
     }
-    return figures("close pipes " + std::to_string(gap) + " apart at " + std::to_string(height), s);
+    MeshOptions options;
+    options.pyramids.apart_factor = apart_factor;
+    return figures("close pipes " + std::to_string(gap) + " apart at " + std::to_string(height) + ", apart factor " +
+                       std::to_string(apart_factor),
+                   s, options);
 }
-// Close enough that the normal criteria reject fronts between the rings and over the face
-// (38 here). At 0.6 apart and 0.35 high the only fronts rejected were the rings' end quads,
-// whose ideal apex was too close to the host; since those get an apex placed for the wedge
-// there (engine/pyramids/wedge.hpp), none is.
+// Close enough that with the paper's apexes (apart_factor 0) the normal criteria reject fronts
+// between the rings and over the face (38 here). At 0.6 apart and 0.35 high the only fronts
+// rejected were the rings' end quads, whose ideal apex was too close to the host; since those
+// get an apex placed for the wedge there (engine/pyramids/wedge.hpp), none is.
 constexpr double kCloseGap = 0.5, kCloseHeight = 0.3;
 
 std::string preset_test_name(const ::testing::TestParamInfo<std::string>& info) { return param_name(info.param); }
@@ -120,13 +124,23 @@ INSTANTIATE_TEST_SUITE_P(All, PresetAcceptance, ::testing::ValuesIn(preset_names
 INSTANTIATE_TEST_SUITE_P(Random, SeedAcceptance, ::testing::ValuesIn(seeds(1, 50)), seed_test_name);
 
 TEST(CloseTubes, RejectedFrontsAreServedWithRelaxedCriteria) {
-    const CaseFigures& f = close_pipes_figures(kCloseGap, kCloseHeight);
+    const CaseFigures& f = close_pipes_figures(kCloseGap, kCloseHeight, 0.0);
     expect_accepted(f);
     const PyramidStats& st = f.pyramids.stats;
     index_t tries = 0;
     for (index_t k : st.try_node) tries += k;
     EXPECT_GT(st.rejected, 0u) << "no front was rejected: the pipes are not close enough to test the relaxed pass";
     EXPECT_GT(st.existing_relaxed + tries, 0u) << "no front needed the relaxed criteria";
+}
+
+// The same pipes with the facing apexes lowered together (the default apart_factor): the
+// fronts between the rings get their ideal apex, lowered, and none needs the relaxed pass.
+TEST(CloseTubes, FacingFrontsAreLoweredTogether) {
+    const CaseFigures& f = close_pipes_figures(kCloseGap, kCloseHeight);
+    expect_accepted(f);
+    const PyramidStats& st = f.pyramids.stats;
+    EXPECT_GT(st.lowered, 0u);
+    EXPECT_LT(st.rejected, close_pipes_figures(kCloseGap, kCloseHeight, 0.0).pyramids.stats.rejected);
 }
 
 // Pipes 0.35 apart, 0.25 over the bottom face: the sizing guards leave the pyramid layer 2.2 St

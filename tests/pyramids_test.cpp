@@ -540,6 +540,60 @@ TEST(Pyramids, EndQuadOpensTheWedgeAtItsHost) {
     }
 }
 
+// An end quad (1.5 across the host edge) under a host leaning over it at 64 degrees: the apex
+// placed with wedge_max_shift (0.45 from M) is too close to the host, so the second apex,
+// shifted by up to wedge_wide_shift (0.75), serves before any existing node or try node. It
+// lies beyond the first one's reach and opens the wedge further than the try node that
+// serves without it.
+TEST(Pyramids, HostLeaningFartherTakesTheWiderWedgeApex) {
+    const PyramidOptions defaults;
+    PyramidOptions narrow = defaults;
+    narrow.wedge_wide_shift = 0;
+    LeaningHost u(64, 1.5), v(64, 1.5);
+    const PyramidResult r = build_pyramids(u.m, {u.quad, u.tris, {}, u.region}, defaults);
+    const PyramidResult rn = build_pyramids(v.m, {v.quad, v.tris, {}, v.region}, narrow);
+    EXPECT_EQ(r.stats.wedge_fronts, 1u);
+    EXPECT_EQ(r.stats.ideal, 0u);
+    EXPECT_EQ(r.stats.wide, 1u);
+    EXPECT_EQ(rn.stats.wide, 0u);
+    const double centre_y = 1 - 0.75;
+    EXPECT_LT(u.m.point(u.m.cell(CellKind::Pyramid, 0)[4]).y, centre_y - defaults.wedge_max_shift * 1.5);
+    EXPECT_GT(host_wedge(u), host_wedge(v));
+    EXPECT_GE(pyramid_quality(u.m)[0], pyramid_quality(v.m)[0]);
+}
+
+// Two unit quads facing each other 2.4 apart (z = 0 facing +z, z = 2.4 facing -z): the paper's
+// apexes, 0.98154 over each, would be 0.44 apart. With the default apart_factor both are
+// lowered by the same factor until they are 0.9 apart, and both are served by their (lowered)
+// ideal apex; without it the first takes its full height and the second a try node nearer the
+// first's apex.
+TEST(Pyramids, FacingFrontsLowerTheirApexesTogether) {
+    for (const double factor : {0.0, PyramidOptions{}.apart_factor}) {
+        SCOPED_TRACE(factor);
+        HybridMesh m;
+        std::vector<index_t> quads;
+        for (const double z : {0.0, 2.4})
+            for (const auto& [x, y] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) quads.push_back(m.add_point(x, y, z));
+        std::swap(quads[5], quads[7]);  // the upper quad faces down
+        PyramidOptions opt;
+        opt.apart_factor = factor;
+        const PyramidResult r = build_pyramids(m, {quads, {}, {}, m.region_id("pyramids")}, opt);
+        ASSERT_EQ(m.cell_count(CellKind::Pyramid), 2u);
+        const Vec3 a = m.point(m.cell(CellKind::Pyramid, 0)[4]), b = m.point(m.cell(CellKind::Pyramid, 1)[4]);
+        for (double q : pyramid_quality(m)) EXPECT_GE(q, 0.45);
+        if (factor == 0) {
+            EXPECT_EQ(r.stats.lowered, 0u);
+            EXPECT_NEAR(a.z, 0.98154, 1e-12);
+            EXPECT_LT(norm(b - a), 0.9);
+        } else {
+            EXPECT_EQ(r.stats.lowered, 2u);
+            EXPECT_EQ(r.stats.ideal, 2u);
+            EXPECT_NEAR(a.z, 2.4 - b.z, 1e-12);
+            EXPECT_NEAR(norm(b - a), factor, 1e-9);
+        }
+    }
+}
+
 TEST(Pyramids, EdgeNearANewEdgeRefusesTheApex) {
     // A horizontal triangle whose corner sits 0.35 from the ideal pyramid's edge from (0,0,0)
     // but 0.9 from its apex; the edge distance allows only the lowest try node.

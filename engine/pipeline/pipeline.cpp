@@ -187,9 +187,11 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
     for (index_t k : s.try_node) try_nodes += k;
     r.counts = {{"pyramids", double(s.pyramids)},
                 {"ideal apex", double(s.ideal)},
+                {"wide wedge apex", double(s.wide)},
                 {"existing apex", double(s.existing + s.existing_relaxed)},
                 {"try-node apex", double(try_nodes)},
                 {"wedge fronts", double(s.wedge_fronts)},
+                {"lowered apex", double(s.lowered)},
                 {"drawbacks", double(s.drawback_rounds)},
                 {"front triangles", double(out.tet_front.size() / 3)}};
     progress.finish();

@@ -82,10 +82,13 @@ void check_input(const HybridMesh& mesh, const PyramidInput& in, const PyramidOp
         !(opt.distance_factor >= 0) || !(opt.relax_rate > 0 && opt.relax_rate <= 1) || opt.try_nodes < 0 ||
         opt.try_nodes > 8 || opt.max_drawback_rounds < 0 || !(opt.min_quality_ratio >= 0) ||
         !(opt.wedge_degrees >= 0 && opt.wedge_degrees < 90) || !(opt.wedge_height_factor > 0) ||
-        !(opt.wedge_max_shift >= 0 && opt.wedge_max_shift < 0.5))
+        !(opt.wedge_max_shift >= 0 && opt.wedge_max_shift < 0.5) ||
+        !(opt.wedge_wide_shift >= 0 && opt.wedge_wide_shift < 1) || !(opt.apart_factor >= 0) ||
+        !(opt.apart_lowest > 0 && opt.apart_lowest <= 1))
         throw Error(
             "pyramids: options out of range (height_factor > 0, relax_rate in (0, 1], try_nodes in 0..8, "
             "wedge_degrees in [0, 90), wedge_height_factor > 0, wedge_max_shift in [0, 0.5), "
+            "wedge_wide_shift in [0, 1), apart_lowest in (0, 1], "
             "factors and rounds not negative)");
     check_fronts_distinct(in.front_quads);
 }
@@ -136,9 +139,12 @@ void append_to_mesh(HybridMesh& mesh, std::span<const Front> fronts, const Front
         const std::array<index_t, 5> nodes{q[0], q[1], q[2], q[3], final_id(state.apex(i))};
         mesh.add_cell(CellKind::Pyramid, nodes, region);
         const std::uint8_t how = state.how(i);
-        if (opens_wedge(fronts[i], opt)) ++s.wedge_fronts;
+        if (fronts[i].wedge) ++s.wedge_fronts;
+        if (fronts[i].lowered) ++s.lowered;
         if (how == kHowIdeal)
             ++s.ideal;
+        else if (how == kHowWide)
+            ++s.wide;
         else if (how == kHowExisting)
             ++s.existing;
         else if (how == kHowExistingRelaxed)

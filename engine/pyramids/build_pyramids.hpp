@@ -74,6 +74,25 @@ struct PyramidOptions {
     double wedge_degrees = 48.0;
     double wedge_height_factor = 0.8;
     double wedge_max_shift = 0.3;
+    // Not in the paper: where the normal pass refuses that apex (on an oblique pipe end whose
+    // host face leans over the end quad, the apex wedge_max_shift allows is too close to the
+    // host), a second one placed the same way but shifted by up to wedge_wide_shift of the
+    // quad's length is tried before the existing nodes. Those fronts used to take the
+    // neighbour's apex (shifted about 0.9 h), whose 34-35 degree wedge held the tet there to
+    // collapse 0.26-0.28 (random blocks 85, 96, 116). At 0.7 the more tilted pyramids crowded
+    // more of the fronts served after them; raising wedge_max_shift itself instead moves the
+    // apexes the normal pass accepts now as well. 0 (or at most wedge_max_shift) disables it.
+    double wedge_wide_shift = 0.5;
+    // Not in the paper: fronts that share no node but whose ideal apexes lie nearer than
+    // apart_factor times their mean h (two rings passing close, their apex layers facing
+    // across the gap) have their ideal apexes lowered along their normals together, by the
+    // largest factor that puts them that far apart, but to no less than apart_lowest of the
+    // height (a front with an apex placed for a wedge keeps it). The first of two facing
+    // fronts served used to take the full height and leave the other a low try node near its
+    // apex; the tet between four such apexes was the worst of the block (random blocks 60, 74,
+    // 79, 131: 0.251-0.296). 0 disables it.
+    double apart_factor = 0.9;
+    double apart_lowest = 0.6;
     // Smallest distance, times h, from the apex to the front's faces and from the new edges
     // to the front's edges (§4 Step 4).
     double distance_factor = 0.65;
@@ -115,11 +134,13 @@ struct PyramidStats {
     index_t pyramids = 0;
     // How the final pyramids got their apex.
     index_t ideal = 0;                       // the ideal node, normal criteria
+    index_t wide = 0;                        // the wider wedge apex (wedge_wide_shift), normal criteria
     index_t existing = 0;                    // an existing node, normal criteria
     index_t existing_relaxed = 0;            // an existing node, relaxed criteria
     std::array<index_t, 8> try_node{};       // try_node[k-1]: the k-th try node (relaxed)
     index_t moved_try_nodes = 0;             // of those, moved off the faces (candidates.hpp)
     index_t wedge_fronts = 0;                // fronts whose ideal apex opens a wedge (wedge.hpp)
+    index_t lowered = 0;                     // fronts whose ideal apex was lowered (apart_factor)
     index_t shared_triangles = 0;            // pyramid triangles that are a face of two pyramids
     index_t covered_boundary_triangles = 0;  // boundary triangles that became a pyramid face
     // Events over the whole run (a front rejected in two rounds counts twice).

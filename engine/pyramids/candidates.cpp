@@ -43,6 +43,8 @@ Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOp
     if (pass == Pass::Normal) {
         const Thresholds t = Thresholds::at(f, opt, 1.0);
         if (try_candidate(f, {kNoIndex, f.ideal}, t, kHowIdeal, vis, world.state, tally, choice)) return choice;
+        if (has_wide(f) && try_candidate(f, {kNoIndex, f.wide}, t, kHowWide, vis, world.state, tally, choice))
+            return choice;
         try_existing(f, t, kHowExisting, vis, world.state, tally, choice);
         return choice;
     }

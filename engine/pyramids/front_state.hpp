@@ -28,7 +28,8 @@ enum : std::uint8_t {
     kHowIdeal = 1,
     kHowExisting = 2,
     kHowExistingRelaxed = 3,
-    kHowTryBase = 4,
+    kHowWide = 4,
+    kHowTryBase = 5,
     kHowMovedTryBase = kHowTryBase + 8
 };
 

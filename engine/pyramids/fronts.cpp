@@ -20,7 +20,7 @@ std::string where(const Vec3& p) {
 }
 
 Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const BoundaryEdges& boundary,
-                 const PyramidOptions& opt) {
+                 const PyramidOptions& opt, double scale = 1.0) {
     Front f;
     for (int k = 0; k < 4; ++k) {
         f.node[k] = q[k];
@@ -45,24 +45,45 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     f.quality_floor = std::min(opt.min_quality, opt.min_quality_ratio * ideal_quality);
     // An apex placed for a wedge may not score below min_quality, nor below the paper's apex
     // where that scores less (an elongated quad): the pyramid would become the mesh's worst
-    // element instead of the tet.
-    const ApexPlacement apex = place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt);
-    const Vec3 placed = (f.centroid + apex.shift) + apex.height * f.normal;
-    // Nor may MN lean past max_angle (possible with non-default wedge_* options only): every
-    // try node on the line M -> N would fail the angle test.
-    const bool upright = std::atan2(norm(apex.shift), apex.height) * 180 / std::numbers::pi < opt.max_angle_degrees;
-    if (apex.wedge && upright &&
-        pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], placed}) >= std::min(opt.min_quality, ideal_quality)) {
-        f.shift = apex.shift;
-        f.height = apex.height;
-        f.ideal = placed;
+    // element instead of the tet. Nor may MN lean past max_angle (possible with non-default
+    // wedge_* options only): every try node on the line M -> N would fail the angle test.
+    const auto at = [&](const ApexPlacement& apex) { return (f.centroid + apex.shift) + apex.height * f.normal; };
+    const auto usable = [&](const ApexPlacement& apex) {
+        const bool upright =
+            std::atan2(norm(apex.shift), apex.height) * 180 / std::numbers::pi < opt.max_angle_degrees;
+        const double quality = pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], at(apex)});
+        return apex.wedge && upright && quality >= std::min(opt.min_quality, ideal_quality);
+    };
+    f.wide = f.ideal;
+    if (scale < 1.0) {
+        // Lowered for a facing front (apart_scales): on the normal line, the quality floor
+        // still the paper apex's.
+        f.height *= scale;
+        f.ideal = f.centroid + f.height * f.normal;
+        f.wide = f.ideal;
+        f.lowered = true;
+    } else {
+        const ApexPlacement apex = place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt, opt.wedge_max_shift);
+        if (usable(apex)) {
+            f.shift = apex.shift;
+            f.height = apex.height;
+            f.ideal = at(apex);
+            f.wide = f.ideal;
+            f.wedge = true;
+        }
+        if (opt.wedge_wide_shift > opt.wedge_max_shift) {
+            const ApexPlacement wide =
+                place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt, opt.wedge_wide_shift);
+            if (usable(wide)) f.wide = at(wide);
+        }
     }
     f.candidate_radius = opt.search_radius_factor * f.h;
     // Try nodes lie between M and N, at most |MN|·(1 - Rate_K) from N.
     const double lowest_rate = std::pow(opt.relax_rate, std::max(opt.try_nodes, 0));
-    const double lift = opens_wedge(f, opt) ? norm(f.ideal - f.centroid) : f.height;
+    const double lift = f.wedge ? norm(f.ideal - f.centroid) : f.height;
     double reach = std::max(f.candidate_radius, lift * (1.0 - lowest_rate));
     for (const Vec3& p : c) reach = std::max(reach, norm(p - f.ideal));
+    reach = std::max(reach, norm(f.wide - f.ideal));  // the second apex's pyramid too
     // A hair more than the exact bound, so that rounding in the bound itself cannot matter.
     f.reach = reach * (1.0 + 1e-9);
     f.query_radius = f.reach + opt.distance_factor * f.h * (1.0 + 1e-9);
@@ -85,6 +106,65 @@ struct IdealCloud {
 using IdealTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, IdealCloud, double, index_t>,
                                                       IdealCloud, 3, index_t>;
 
+bool shares_node(const Front& f, const Front& g) {
+    for (index_t a : f.node)
+        for (index_t b : g.node)
+            if (a == b) return true;
+    return false;
+}
+
+// Apexes at a + l·b apart (l the common scale of the heights): the largest l in [lowest, 1]
+// that puts them `want` apart; when none does, whichever of lowest and 1 leaves them farther
+// apart (1 where lowering brings them closer). At l = 1 they are nearer than `want`.
+double apart_scale(const Vec3& a, const Vec3& b, double want, double lowest) {
+    const double aa = norm2(a), ab = dot(a, b), bb = norm2(b);
+    if (bb > 0) {
+        const double disc = ab * ab - bb * (aa - want * want);
+        if (disc >= 0) {
+            const double root = (-ab - std::sqrt(disc)) / bb;  // where the too-near stretch begins
+            if (root >= lowest && root <= 1.0) return root;
+        }
+    }
+    const auto d2 = [&](double l) { return aa + 2 * l * ab + l * l * bb; };
+    return d2(lowest) > d2(1.0) ? lowest : 1.0;
+}
+
+// Per front, the scale of its ideal height that PyramidOptions::apart_factor asks for (1:
+// none), decided from the unscaled fronts only, so it does not depend on the order of work.
+// A front with an apex placed for a wedge keeps it, and the fronts near it see it there.
+std::vector<double> apart_scales(std::span<const Front> fronts, const PyramidOptions& opt) {
+    const std::size_t n = fronts.size();
+    std::vector<double> scale(n, 1.0);
+    if (!(opt.apart_factor > 0) || n < 2) return scale;
+    double largest_h = 0;
+    for (const Front& f : fronts) largest_h = std::max(largest_h, f.h);
+    IdealCloud cloud{fronts};
+    IdealTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    tree.buildIndex();
+    const double radius = opt.apart_factor * largest_h;
+    const auto keeps_apex = [](const Front& f) { return f.wedge || has_wide(f); };
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<std::pair<index_t, double>> hits;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            const Front& f = fronts[i];
+            if (keeps_apex(f)) continue;
+            const double q[3] = {f.ideal.x, f.ideal.y, f.ideal.z};
+            tree.radiusSearch(q, radius * radius, hits, nanoflann::SearchParams(32, 0.0f, false));
+            for (const auto& [j, d2] : hits) {
+                const Front& g = fronts[j];
+                if (j == i || shares_node(f, g)) continue;
+                const double want = opt.apart_factor * 0.5 * (f.h + g.h);
+                if (!(d2 < want * want)) continue;
+                // f's apex at M_f + l·H_f·n_f; g's lowered alike, or at N_g when it keeps it.
+                const Vec3 from = keeps_apex(g) ? g.ideal : g.centroid;
+                const Vec3 b = keeps_apex(g) ? f.height * f.normal : f.height * f.normal - g.height * g.normal;
+                scale[i] = std::min(scale[i], apart_scale(f.centroid - from, b, want, opt.apart_lowest));
+            }
+        }
+    });
+    return scale;
+}
+
 }  // namespace
 
 std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
@@ -95,6 +175,12 @@ std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> 
     std::vector<Front> fronts(n);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt);
+    });
+    // Facing fronts lowered together (PyramidOptions::apart_factor).
+    const std::vector<double> scale = apart_scales(fronts, opt);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+        if (scale[i] < 1.0)
+            fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt, scale[i]);
     });
     return fronts;
 }

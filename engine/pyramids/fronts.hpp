@@ -26,7 +26,8 @@ struct alignas(64) Front {
     Vec3 normal;    // n, unit, into the tet region
     // N over M: the paper's height_factor·h on the normal line, but for a front with an edge
     // on a boundary face whose wedge there is too narrow (wedge.hpp): at wedge_height_factor·h
-    // (lower, with the default factors), and shifted in the quad's plane away from that edge.
+    // (lower, with the default factors), and shifted in the quad's plane away from that edge;
+    // and for a front facing another too closely, lower on the normal line (apart_factor).
     // Try node k is M + Rate·(N − M).
     Vec3 shift;
     double height;
@@ -40,11 +41,16 @@ struct alignas(64) Front {
     // min(min_quality, min_quality_ratio · the ideal pyramid's score), so a front whose
     // quad is too elongated for even its ideal pyramid to reach min_quality still gets one.
     double quality_floor;
+    // The second apex of a wedge front (PyramidOptions::wedge_wide_shift), tried in the normal
+    // pass when N is refused; N itself when there is none.
+    Vec3 wide;
+    bool wedge = false;    // N was placed to open a wedge (wedge.hpp), not the paper's
+    bool lowered = false;  // N was lowered for a facing front (PyramidOptions::apart_factor)
 };
 
-// The front's N is not the paper's: it was placed to open a wedge (wedge.hpp).
-inline bool opens_wedge(const Front& f, const PyramidOptions& opt) {
-    return f.shift.x != 0 || f.shift.y != 0 || f.shift.z != 0 || f.height != opt.height_factor * f.h;
+// The front has a second apex to try (Front::wide).
+inline bool has_wide(const Front& f) {
+    return f.wide.x != f.ideal.x || f.wide.y != f.ideal.y || f.wide.z != f.ideal.z;
 }
 
 // Throws tubemesh::Error for a degenerate quad (zero area or zero edge length).

@@ -34,7 +34,7 @@ index_t BoundaryEdges::opposite(index_t a, index_t b) const {
 }
 
 ApexPlacement place_apex(const HybridMesh& mesh, const index_t* quad, const Vec3& centroid, const Vec3& normal,
-                         double h, const BoundaryEdges& boundary, const PyramidOptions& opt) {
+                         double h, const BoundaryEdges& boundary, const PyramidOptions& opt, double max_shift) {
     ApexPlacement paper{{0, 0, 0}, opt.height_factor * h, false};
     if (!(opt.wedge_degrees > 0)) return paper;
     const double angle = opt.wedge_degrees * std::numbers::pi / 180.0;
@@ -64,7 +64,7 @@ ApexPlacement place_apex(const HybridMesh& mesh, const index_t* quad, const Vec3
         // The ray at the target angle from t, turned towards u; the apex at the lowered height
         // must lie beyond it: depth + shift >= height · ru / rn.
         const double ru = (tu * cos_target + tn * sin_target) / tl, rn = (tn * cos_target - tu * sin_target) / tl;
-        const double most = opt.wedge_max_shift * 2.0 * depth;
+        const double most = max_shift * 2.0 * depth;
         const double shift = rn > 0 ? std::clamp(placed.height * ru / rn - depth, 0.0, most) : most;
         placed.shift = placed.shift + shift * u;
     }

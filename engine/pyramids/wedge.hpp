@@ -43,11 +43,12 @@ struct ApexPlacement {
 // The paper's apex (no shift, height_factor·h) unless an edge of the quad lies on a boundary
 // triangle and leaves a wedge narrower than opt.wedge_degrees under the paper's lateral face;
 // then the apex at opt.wedge_height_factor·h, shifted away from that edge just enough to open
-// the wedge to opt.wedge_degrees, at most opt.wedge_max_shift of the quad's length. Each such
-// edge adds its shift: a quad with boundary triangles on two opposite edges (a tube one
-// station long) gets shifts that cancel, and its wedges stay as the lowered apex leaves them.
+// the wedge to opt.wedge_degrees, at most max_shift of the quad's length (the options'
+// wedge_max_shift, or their wedge_wide_shift for a front's second apex). Each such edge adds
+// its shift: a quad with boundary triangles on two opposite edges (a tube one station long)
+// gets shifts that cancel, and its wedges stay as the lowered apex leaves them.
 // The caller judges the placed pyramid's quality (fronts.cpp).
 ApexPlacement place_apex(const HybridMesh& mesh, const index_t* quad, const Vec3& centroid, const Vec3& normal,
-                         double h, const BoundaryEdges& boundary, const PyramidOptions& opt);
+                         double h, const BoundaryEdges& boundary, const PyramidOptions& opt, double max_shift);
 
 }  // namespace tubemesh::pyramids

@@ -49,10 +49,11 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     // wedge_* options only): every try node on the line M -> N would fail the angle test.
     const auto at = [&](const ApexPlacement& apex) { return (f.centroid + apex.shift) + apex.height * f.normal; };
     const auto usable = [&](const ApexPlacement& apex) {
+        if (!apex.wedge) return false;
         const bool upright =
             std::atan2(norm(apex.shift), apex.height) * 180 / std::numbers::pi < opt.max_angle_degrees;
-        const double quality = pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], at(apex)});
-        return apex.wedge && upright && quality >= std::min(opt.min_quality, ideal_quality);
+        return upright &&
+               pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], at(apex)}) >= std::min(opt.min_quality, ideal_quality);
     };
     f.wide = f.ideal;
     if (scale < 1.0) {
@@ -71,7 +72,9 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
             f.wide = f.ideal;
             f.wedge = true;
         }
-        if (opt.wedge_wide_shift > opt.wedge_max_shift) {
+        // Only a quad whose wedge is narrow has a placement to widen (place_apex decides that
+        // before it looks at the shift's bound).
+        if (apex.wedge && opt.wedge_wide_shift > opt.wedge_max_shift) {
             const ApexPlacement wide =
                 place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt, opt.wedge_wide_shift);
             if (usable(wide)) f.wide = at(wide);

@@ -144,7 +144,6 @@ std::vector<double> apart_scales(std::span<const Front> fronts, const PyramidOpt
     IdealCloud cloud{fronts};
     IdealTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     tree.buildIndex();
-    const double radius = opt.apart_factor * largest_h;
     const auto keeps_apex = [](const Front& f) { return f.wedge || has_wide(f); };
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::vector<std::pair<index_t, double>> hits;
@@ -152,6 +151,9 @@ std::vector<double> apart_scales(std::span<const Front> fronts, const PyramidOpt
             const Front& f = fronts[i];
             if (keeps_apex(f)) continue;
             const double q[3] = {f.ideal.x, f.ideal.y, f.ideal.z};
+            // Every pair's distance asked for below is within this (rings of very different
+            // sizes would otherwise make the small fronts search as far as the largest asks).
+            const double radius = opt.apart_factor * 0.5 * (f.h + largest_h);
             tree.radiusSearch(q, radius * radius, hits, nanoflann::SearchParams(32, 0.0f, false));
             for (const auto& [j, d2] : hits) {
                 const Front& g = fronts[j];

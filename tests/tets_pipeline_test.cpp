@@ -58,7 +58,7 @@ constexpr int kCiSeeds = 20, kLastSeed = 50;
 // (lowest 0.271, seed 60; 12 and 0.263 before the pyramid layer lowered facing apexes together
 // and tried a wider wedge apex, 2026-12-03), always at a tet whose four points the front
 // fixes: two rings' apex layers facing each other across a narrow gap, or a ring's end pyramid
-// over its host face (an oblique one, or a tall host triangle beside the end edge). No move
+// over its host face (an oblique one, or a flat host triangle on the end edge). No move
 // reaches such a tet, and the rescue's flips and new points do not lift these; the tet step
 // must still fill the front, keep every tet at 0.20 or more, and leave no tet with a free
 // point that poor.

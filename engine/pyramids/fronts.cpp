@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nanoflann.hpp>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "engine/pyramids/wedge.hpp"
@@ -55,13 +56,12 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
         return upright &&
                pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], at(apex)}) >= std::min(opt.min_quality, ideal_quality);
     };
-    f.wide = f.ideal;
+    std::optional<Vec3> wide;  // the second, wider-shifted wedge apex, when there is one
     if (scale < 1.0) {
         // Lowered for a facing front (apart_scales): on the normal line, the quality floor
         // still the paper apex's.
         f.height *= scale;
         f.ideal = f.centroid + f.height * f.normal;
-        f.wide = f.ideal;
         f.lowered = true;
     } else {
         const ApexPlacement apex = place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt, opt.wedge_max_shift);
@@ -69,17 +69,17 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
             f.shift = apex.shift;
             f.height = apex.height;
             f.ideal = at(apex);
-            f.wide = f.ideal;
             f.wedge = true;
         }
         // Only a quad whose wedge is narrow has a placement to widen (place_apex decides that
         // before it looks at the shift's bound).
         if (apex.wedge && opt.wedge_wide_shift > opt.wedge_max_shift) {
-            const ApexPlacement wide =
+            const ApexPlacement second =
                 place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt, opt.wedge_wide_shift);
-            if (usable(wide)) f.wide = at(wide);
+            if (usable(second)) wide = at(second);
         }
     }
+    f.wide = wide.value_or(f.ideal);
     f.candidate_radius = opt.search_radius_factor * f.h;
     // Try nodes lie between M and N, at most |MN|·(1 - Rate_K) from N.
     const double lowest_rate = std::pow(opt.relax_rate, std::max(opt.try_nodes, 0));

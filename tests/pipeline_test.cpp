@@ -166,8 +166,9 @@ TEST(Pipeline, FullMeshIsTheSameOnARerun) {
     EXPECT_TRUE(check_mesh(a.mesh).ok()) << describe(check_mesh(a.mesh));
 }
 
-// The tet phase's report splits the optimisation time into its flips, smoothing and rescue,
-// so a slow tet step can be traced to its part without a profiler.
+// The tet phase's report splits the recovery time into its steps and the optimisation time into
+// its flips, smoothing and rescue, so a slow tet step can be traced to its part without a
+// profiler.
 TEST(Pipeline, TetPhaseReportsWhereTheOptimisationTimeWent) {
     const Prepared p = prepare("straight-pipe");
     const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {});
@@ -190,6 +191,13 @@ TEST(Pipeline, TetPhaseReportsWhereTheOptimisationTimeWent) {
     EXPECT_GE(stat("optimisation passes"), 1.0);
     EXPECT_EQ(stat("optimisation passes"), double(r.tet_stats.optimise.passes));
     EXPECT_LE(stat("recovery s") + stat("refinement s") + total, tets->seconds);
+    // Recovery's own split: the front's Delaunay, the edges, the faces, the Steiner points
+    // taken out again and the classification of inside and outside.
+    const double recovery_parts = stat("recovery delaunay s") + stat("recovery edges s") + stat("recovery faces s") +
+                                  stat("recovery steiner removal s") + stat("recovery classify s");
+    EXPECT_GT(stat("recovery delaunay s"), 0.0);
+    EXPECT_GT(stat("recovery classify s"), 0.0);
+    EXPECT_LE(recovery_parts, stat("recovery s"));
     const auto count = [&](const std::string& key) {
         for (const auto& [k, v] : tets->counts)
             if (k == key) return v;

@@ -230,6 +230,11 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
                 {"worst tets rescued", double(s.optimise.rescued)},
                 {"rescue points", double(s.optimise.inserted_points)}};
     r.statistics = {{"recovery s", s.recovery.seconds_total},
+                    {"recovery delaunay s", s.recovery.seconds_delaunay},
+                    {"recovery edges s", s.recovery.seconds_edges},
+                    {"recovery faces s", s.recovery.seconds_faces},
+                    {"recovery steiner removal s", s.recovery.seconds_steiner_removal},
+                    {"recovery classify s", s.recovery.seconds_classify},
                     {"refinement s", s.refine.seconds},
                     {"relaxation s", s.relaxation.seconds},
                     {"optimisation s", s.optimise.seconds_total},

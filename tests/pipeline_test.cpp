@@ -169,7 +169,7 @@ TEST(Pipeline, FullMeshIsTheSameOnARerun) {
 // The tet phase's report splits the recovery time into its steps and the optimisation time into
 // its flips, smoothing and rescue, so a slow tet step can be traced to its part without a
 // profiler.
-TEST(Pipeline, TetPhaseReportsWhereTheOptimisationTimeWent) {
+TEST(Pipeline, TetPhaseReportsWhereItsTimeWent) {
     const Prepared p = prepare("straight-pipe");
     const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {});
     const PhaseReport* tets = nullptr;

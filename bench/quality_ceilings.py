@@ -16,10 +16,10 @@ optimiser), at the size that gives about as many tets as ours.
 For each of our meshes with pyramids the table also bounds what the rest of the mesh would
 have to reach for a 0.80 mean. Tets whose four corners are pyramid corners with at least two
 apexes (the valleys between pyramids and the voids over ring nodes) have only fixed corners:
-no move of interior points changes them (only points inserted into the valleys would, as a
-finer grading does). A tet of three apexes and one free point is at best
-what its apex triangle allows that point alone (searched per triangle, to about 0.001). With
-those two groups at that, the last column says what every other tet would have to average.
+no move of interior points changes them (only points inserted into the voids would, as a finer
+grading does). A tet of three apexes and one free point is at best what its apex triangle
+allows that point alone (searched per triangle, to about 0.001). With those two groups at
+that, the last column says what every other tet would have to average.
 
 The hole-free solids are written by Gmsh's OpenCASCADE kernel, whose STEP files say
 millimetre: the boxes are built 1000 times larger and meshed at 1000 S, which leaves every
@@ -167,7 +167,7 @@ def apex_grid_bound(vtu):
     kind[pyramids[:, 4]] = 1
     q = collapse(mesh.points[tets])
     k = kind[tets]
-    apexes, bases, others = (k == 1).sum(1), (k == 2).sum(1), (k == 0).sum(1)
+    apexes, others = (k == 1).sum(1), (k == 0).sum(1)
     fixed = (others == 0) & (apexes >= 2)
     three = (apexes == 3) & (others == 1)
     t, kt = tets[three], k[three]

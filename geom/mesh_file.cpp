@@ -8,6 +8,7 @@
 #include "engine/pipeline/stage_check.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
+#include "geom/describe_groups.hpp"
 #include "geom/import.hpp"
 #include "geom/prepare.hpp"
 
@@ -47,6 +48,7 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
     r.warnings.insert(r.warnings.begin(), prepared.warnings.begin(), prepared.warnings.end());
 
     if (options.check) check_result(r, options.progress);
+    describe_groups(model, prepared.tubes, r.mesh, r.description);
 
     run.source = model.report().source;
     run.format = model.report().format;

@@ -61,23 +61,22 @@ TEST(MeshioReads, OurVtu) {
     write_vtu(mesh, dir / "mesh.vtu");
     const json seen = run_script("meshio_summary.py", {(dir / "mesh.vtu").string()});
     EXPECT_EQ(seen["points"], mesh.point_count());
-    EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh, true));
-    EXPECT_EQ(seen["cell_data"], json({"dim", "group", "kind", "quality"}));
-    // One numbering: regions, then surface groups; the empty ones are in the field data too.
+    EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh, false));
+    EXPECT_EQ(seen["cell_data"], json({"aspect_ratio", "condition", "group", "kind", "min_dihedral", "quality",
+                                       "scaled_jacobian"}));
+    // Regions and surface groups each numbered from 0; the empty ones are in the field data too.
     EXPECT_EQ(seen["field_data"], testing::vtu_field_data(mesh)) << seen["field_data"].dump();
     Counts groups;
     for (CellKind k : kAllCellKinds)
         for (index_t r : mesh.block(k).region) ++groups[std::to_string(r)];
-    for (FaceKind k : {FaceKind::Tri, FaceKind::Quad})
-        for (index_t g : mesh.block(k).group) ++groups[std::to_string(mesh.region_names.size() + g)];
     EXPECT_EQ(seen["group_counts"].get<Counts>(), groups);
-    EXPECT_EQ(seen["quality_nan"], 0);  // every boundary face is a face of a cell
+    EXPECT_EQ(seen["quality_nan"], 0);
     EXPECT_GT(seen["quality_min"].get<double>(), 0.1);  // the grid's cells are all fair
 }
 
-// A face no cell has gets quality NaN; a name used twice gets "_2" in the field data; names
-// with XML specials survive.
-TEST(MeshioReads, OurVtuGroupTableEdgeCases) {
+// A name used twice gets "_2" in the field data; names with XML specials survive; in the
+// .vtm a face no cell has gets quality NaN and every block reads.
+TEST(MeshioReads, OurVtuAndVtmGroupTableEdgeCases) {
     TempDir dir;
     HybridMesh mesh = testing::conforming_patch();
     mesh.surface_group_names[0] = "tets";         // also a region
@@ -87,12 +86,19 @@ TEST(MeshioReads, OurVtuGroupTableEdgeCases) {
     mesh.add_face(FaceKind::Tri, nodes, loose);
     write_vtu(mesh, dir / "mesh.vtu");
     const json seen = run_script("meshio_summary.py", {(dir / "mesh.vtu").string()});
-    const json regions = static_cast<int>(mesh.region_names.size());
     EXPECT_EQ(seen["field_data"]["tets"], json({2, 3})) << seen.dump();
-    EXPECT_EQ(seen["field_data"]["tets_2"], json({regions, 2}));
-    EXPECT_EQ(seen["field_data"]["a&b <\"c\">"], json({regions.get<int>() + 1, 2}));
-    EXPECT_EQ(seen["field_data"]["loose"], json({regions.get<int>() + 2, 2}));
-    EXPECT_EQ(seen["quality_nan"], 1);
+    EXPECT_EQ(seen["field_data"]["tets_2"], json({0, 2}));
+    EXPECT_EQ(seen["field_data"]["a&b <\"c\">"], json({1, 2}));
+    EXPECT_EQ(seen["field_data"]["loose"], json({2, 2}));
+    EXPECT_EQ(seen["quality_nan"], 0);
+
+    write_vtm(mesh, dir / "mesh.vtm");
+    const json blocks = run_script("meshio_summary.py", {(dir / "mesh.vtm").string()});
+    ASSERT_TRUE(blocks.contains("blocks")) << blocks.dump();
+    EXPECT_EQ(blocks["blocks"]["boundary/loose"]["quality_nan"], 1) << blocks.dump();
+    EXPECT_EQ(blocks["blocks"]["boundary/loose"]["cells"], json({{"triangle", 1}}));
+    EXPECT_EQ(blocks["blocks"]["volume/pyramids"]["cells"], json({{"pyramid", 1}}));
+    EXPECT_EQ(blocks["blocks"]["boundary/a&b <\"c\">"]["quality_nan"], 0);
 }
 
 TEST(MeshioReads, OurInp) {
@@ -101,7 +107,9 @@ TEST(MeshioReads, OurInp) {
         write_inp(mesh, dir / "mesh.inp");
         const json seen = run_script("meshio_summary.py", {(dir / "mesh.inp").string()});
         EXPECT_EQ(seen["points"], mesh.point_count());
-        EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh, false));
+        EXPECT_EQ(seen["cells"].get<Counts>(), meshio_counts(mesh, true));
+        EXPECT_EQ(seen["cell_set_sizes"]["EALL"], mesh.cell_count());
+        EXPECT_EQ(seen["point_set_sizes"]["NALL"], mesh.point_count());
         for (const std::string& region : mesh.region_names)
             if (region != "unused") {
                 EXPECT_TRUE(listed(seen["cell_sets"], region)) << region << seen.dump();

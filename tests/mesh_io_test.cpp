@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "engine/io/abaqus_faces.hpp"
 #include "engine/io/abaqus_names.hpp"
+#include "engine/io/abaqus_number.hpp"
 #include "engine/io/boundary_cell_faces.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "engine/io/msh_reader.hpp"
@@ -79,8 +82,9 @@ TEST(MshWriter, AsciiHeaderAndBinaryHeader) {
     write_msh(mesh, dir / "b.msh", MshEncoding::Binary);
     const std::string a = testing::read_text(dir / "a.msh");
     const std::string b = testing::read_text(dir / "b.msh");
-    EXPECT_EQ(a.rfind("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n2 1 \"hex_sides\"\n", 0), 0u);
-    EXPECT_EQ(b.rfind(std::string("$MeshFormat\n4.1 1 8\n\x01\0\0\0\n$EndMeshFormat\n", 40), 0), 0u);
+    EXPECT_EQ(a.rfind("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Comments\nlength unit: not known", 0), 0u) << a;
+    EXPECT_TRUE(contains(a, "$EndComments\n$PhysicalNames\n5\n2 1 \"hex_sides\"\n"));
+    EXPECT_EQ(b.rfind(std::string("$MeshFormat\n4.1 1 8\n\x01\0\0\0\n$EndMeshFormat\n$Comments\n", 50), 0), 0u);
     EXPECT_TRUE(contains(a, "3 3 \"tets\"\n"));
 }
 
@@ -280,23 +284,62 @@ TEST(VtuWriter, HeaderCountsAndLegend) {
     write_vtu(testing::conforming_patch(), dir / "m.vtu");
     const std::string text = testing::read_text(dir / "m.vtu");
     EXPECT_TRUE(contains(text, "header_type=\"UInt64\"")) << text;
-    // 12 cells, then the 10 boundary triangles and 5 boundary quads.
-    EXPECT_TRUE(contains(text, "<Piece NumberOfPoints=\"13\" NumberOfCells=\"27\">"));
-    EXPECT_TRUE(contains(text, "group 1: region \"pyramids\""));
-    EXPECT_TRUE(contains(text, "group 4: surface group \"upper_sides\""));
-    for (const char* name : {"connectivity", "offsets", "types", "dim", "kind", "group", "quality"})
+    // The 12 volume cells only: the boundary faces go to the .vtm's boundary blocks.
+    EXPECT_TRUE(contains(text, "<Piece NumberOfPoints=\"13\" NumberOfCells=\"12\">"));
+    EXPECT_TRUE(contains(text, "region 1: pyramids"));
+    EXPECT_TRUE(contains(text, "surface group 1: upper_sides"));
+    EXPECT_TRUE(contains(text, "length unit: not known"));
+    for (const char* name : {"connectivity", "offsets", "types", "kind", "group", "quality", "scaled_jacobian",
+                             "min_dihedral", "aspect_ratio", "condition"})
         EXPECT_TRUE(contains(text, std::string("Name=\"") + name + "\"")) << name;
-    // One UInt8 per cell type: 8-byte header + 27 bytes = 35 bytes = 48 base64 characters.
-    // Tets (10) first, then the pyramid (14), the hex (12), triangles (5) and quads (9).
-    EXPECT_TRUE(contains(text, "Name=\"types\" format=\"binary\">\n          "
-                               "GwAAAAAAAAAKCgoKCgoKCgoKDgwFBQUFBQUFBQUFCQkJCQk=\n"));
-    // dim: 3 for the 12 cells, 2 for the 15 faces.
-    EXPECT_TRUE(contains(text, "Name=\"dim\" format=\"binary\">\n          "
-                               "GwAAAAAAAAADAwMDAwMDAwMDAwMCAgICAgICAgICAgICAgI=\n"));
-    // Field data before the piece: upper_sides is group 3 + 1 = 4 of dimension 2.
+    EXPECT_FALSE(contains(text, "Name=\"dim\""));
+    // One UInt8 per cell type: 8-byte header + 12 bytes = 20 bytes = 28 base64 characters.
+    // Tets (10) first, then the pyramid (14) and the hex (12).
+    EXPECT_TRUE(contains(text, "Name=\"types\" format=\"binary\">\n          DAAAAAAAAAAKCgoKCgoKCgoKDgw=\n"));
+    // Field data before the piece: upper_sides is surface group 1, of dimension 2.
     EXPECT_LT(text.find("<FieldData>"), text.find("<Piece "));
     EXPECT_TRUE(contains(text, "<DataArray type=\"Int32\" Name=\"upper_sides\" NumberOfTuples=\"2\" "
-                               "format=\"binary\">\n          CAAAAAAAAAAEAAAAAgAAAA==\n"));
+                               "format=\"binary\">\n          CAAAAAAAAAABAAAAAgAAAA==\n"));
+}
+
+// A .vtm that cannot be completed leaves nothing it made: its folder of blocks goes too.
+TEST(VtmWriter, FailureLeavesNothingItMade) {
+    TempDir dir;
+    const auto path = dir / "mesh.vtm";
+    std::filesystem::create_directories(path / "occupied");  // the index cannot replace a non-empty folder
+    const std::string message = error_of([&] { write_mesh(testing::conforming_patch(), path); });
+    EXPECT_TRUE(contains(message, "cannot replace '" + path.string() + "'")) << message;
+    EXPECT_EQ(testing::entry_count(dir.path()), 1);
+    testing::write_text(dir / "file", "x");
+    const std::string blocked = error_of([&] { write_mesh(testing::conforming_patch(), dir / "file" / "m.vtm"); });
+    EXPECT_TRUE(contains(blocked, "Not a directory")) << blocked;
+    EXPECT_EQ(testing::entry_count(dir.path()), 2);
+}
+
+// The multiblock names one block per region and per surface group; each file holds exactly
+// its group's elements and the points they use.
+TEST(VtmWriter, OneNamedBlockPerGroup) {
+    TempDir dir;
+    const HybridMesh mesh = testing::conforming_patch();
+    write_vtm(mesh, dir / "m.vtm");
+    const std::string index = testing::read_text(dir / "m.vtm");
+    EXPECT_TRUE(contains(index, "type=\"vtkMultiBlockDataSet\"")) << index;
+    EXPECT_TRUE(contains(index, "<Block index=\"0\" name=\"volume\">")) << index;
+    EXPECT_TRUE(contains(index, "<Block index=\"1\" name=\"boundary\">")) << index;
+    std::size_t blocks = 0;
+    for (std::size_t at = index.find("<DataSet "); at != std::string::npos; at = index.find("<DataSet ", at + 1))
+        ++blocks;
+    std::size_t used = 0;  // groups with elements
+    for (const std::string& r : mesh.region_names) used += contains(index, "name=\"" + r + "\"");
+    EXPECT_EQ(used, mesh.region_names.size());
+    EXPECT_EQ(blocks, mesh.region_names.size() + mesh.surface_group_names.size());
+    // The pyramid's block: one cell, its five points.
+    const std::string pyramid = testing::read_text(dir / "m" / "volume_pyramids.vtu");
+    EXPECT_TRUE(contains(pyramid, "<Piece NumberOfPoints=\"5\" NumberOfCells=\"1\">")) << pyramid;
+    // The hex's five boundary quads use its eight points.
+    const std::string sides = testing::read_text(dir / "m" / "boundary_hex_sides.vtu");
+    EXPECT_TRUE(contains(sides, "<Piece NumberOfPoints=\"8\" NumberOfCells=\"5\">")) << sides;
+    EXPECT_EQ(testing::entry_count(dir / "m"), static_cast<int>(blocks));
 }
 
 // ---------------------------------------------------------------- Abaqus
@@ -305,43 +348,109 @@ TEST(AbaqusFaces, MappingOfTheTopologyTables) {
     const int tet[4] = {3, 4, 2, 1};
     for (int f = 0; f < 4; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Tet, f), tet[f]) << f;
     for (int f = 0; f < 5; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Pyramid, f), f + 1) << f;
+    // As a collapsed brick the pyramid keeps the brick's numbers; S2 is the apex alone.
+    const int collapsed[5] = {1, 3, 4, 5, 6};
+    for (int f = 0; f < 5; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Pyramid, f, true), collapsed[f]) << f;
     for (int f = 0; f < 6; ++f) EXPECT_EQ(io::abaqus_face_number(CellKind::Hex, f), f + 1) << f;
 }
 
-// The Abaqus face named for each boundary face has exactly the boundary face's nodes.
+// The Abaqus face named for each boundary face has exactly the boundary face's nodes, with
+// pyramids as C3D5 and as collapsed C3D8 (nodes 1 2 3 4 5 5 5 5).
 TEST(AbaqusFaces, BoundaryFacesMapToTheirCellFaces) {
     const HybridMesh mesh = testing::mixed_grid(3);
     const auto owners = io::boundary_cell_faces(mesh);
-    for (FaceKind fk : {FaceKind::Tri, FaceKind::Quad})
-        for (index_t f = 0; f < mesh.face_count(fk); ++f) {
-            const io::CellFaceRef ref = owners[static_cast<int>(fk)][f];
-            ASSERT_NE(ref.cell, kNoIndex);
-            const int s = io::abaqus_face_number(ref.kind, ref.local_face);
-            const io::AbaqusFace af = ref.kind == CellKind::Tet       ? io::kAbaqusTetFaces[s - 1]
-                                      : ref.kind == CellKind::Pyramid ? io::kAbaqusPyramidFaces[s - 1]
-                                                                      : io::kAbaqusHexFaces[s - 1];
-            const auto cell = mesh.cell(ref.kind, ref.cell);
-            std::vector<index_t> abaqus_nodes, face_nodes(mesh.face(fk, f).begin(), mesh.face(fk, f).end());
-            for (int k = 0; k < af.size; ++k) abaqus_nodes.push_back(cell[af.node[k] - 1]);
-            std::sort(abaqus_nodes.begin(), abaqus_nodes.end());
-            std::sort(face_nodes.begin(), face_nodes.end());
-            EXPECT_EQ(abaqus_nodes, face_nodes);
-        }
+    for (bool collapsed : {false, true})
+        for (FaceKind fk : {FaceKind::Tri, FaceKind::Quad})
+            for (index_t f = 0; f < mesh.face_count(fk); ++f) {
+                const io::CellFaceRef ref = owners[static_cast<int>(fk)][f];
+                ASSERT_NE(ref.cell, kNoIndex);
+                const int s = io::abaqus_face_number(ref.kind, ref.local_face, collapsed);
+                const io::AbaqusFace af = ref.kind == CellKind::Tet                   ? io::kAbaqusTetFaces[s - 1]
+                                          : ref.kind == CellKind::Pyramid && !collapsed ? io::kAbaqusPyramidFaces[s - 1]
+                                                                                        : io::kAbaqusHexFaces[s - 1];
+                const auto cell = mesh.cell(ref.kind, ref.cell);
+                std::vector<index_t> abaqus_nodes, face_nodes(mesh.face(fk, f).begin(), mesh.face(fk, f).end());
+                for (int k = 0; k < af.size; ++k)
+                    abaqus_nodes.push_back(cell[std::min<int>(af.node[k] - 1, static_cast<int>(cell.size()) - 1)]);
+                std::sort(abaqus_nodes.begin(), abaqus_nodes.end());
+                abaqus_nodes.erase(std::unique(abaqus_nodes.begin(), abaqus_nodes.end()), abaqus_nodes.end());
+                std::sort(face_nodes.begin(), face_nodes.end());
+                EXPECT_EQ(abaqus_nodes, face_nodes);
+            }
 }
 
 TEST(InpWriter, SetsAndSurfacesOfThePatch) {
     TempDir dir;
     write_inp(testing::conforming_patch(), dir / "m.inp");
     const std::string text = testing::read_text(dir / "m.inp");
-    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D4, ELSET=KIND_C3D4\n1, ")) << text;
-    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D5, ELSET=KIND_C3D5\n11, 5, 6, 7, 8, 13\n")) << text;
-    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D8, ELSET=KIND_C3D8\n12, 1, 2, 3, 4, 5, 6, 7, 8\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D4, ELSET=KIND_TET\n1, ")) << text;
+    // The pyramid as a brick with its apex repeated.
+    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D8, ELSET=KIND_PYRAMID\n11, 5, 6, 7, 8, 13, 13, 13, 13\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELEMENT, TYPE=C3D8, ELSET=KIND_HEX\n12, 1, 2, 3, 4, 5, 6, 7, 8\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELSET, ELSET=EALL, GENERATE\n1, 12, 1\n")) << text;
+    EXPECT_TRUE(contains(text, "*NSET, NSET=NALL, GENERATE\n1, 13, 1\n")) << text;
     EXPECT_TRUE(contains(text, "*ELSET, ELSET=pyramids\n11\n")) << text;
     EXPECT_TRUE(contains(text, "*ELSET, ELSET=tets\n1, 2, 3, 4, 5, 6, 7, 8, 9, 10\n")) << text;
-    // The hex's five boundary quads: bottom and the four sides, faces S1 and S3..S6.
-    EXPECT_TRUE(contains(text, "*SURFACE, NAME=hex_sides, TYPE=ELEMENT\n12, S1\n12, S3\n12, S4\n12, S5\n12, S6\n"))
+    // The hex's five boundary quads: bottom and the four sides, faces S1 and S3..S6, one
+    // element set per face number for CalculiX's *FILM / *DFLUX, and the surface from them.
+    for (int s : {1, 3, 4, 5, 6})
+        EXPECT_TRUE(contains(text, "*ELSET, ELSET=hex_sides_S" + std::to_string(s) + "\n12\n")) << s;
+    EXPECT_TRUE(contains(text, "*SURFACE, NAME=hex_sides, TYPE=ELEMENT\nhex_sides_S1, S1\nhex_sides_S3, S3\n"
+                               "hex_sides_S4, S4\nhex_sides_S5, S5\nhex_sides_S6, S6\n"))
         << text;
     EXPECT_TRUE(contains(text, "*NSET, NSET=hex_sides\n1, 2, 3, 4, 5, 6, 7, 8\n")) << text;
+    // hex_sides and upper_sides meet in the ring 5-6-7-8.
+    EXPECT_TRUE(contains(text, "*NSET, NSET=SHARED_hex_sides_upper_sides\n5, 6, 7, 8\n")) << text;
+    EXPECT_TRUE(contains(text, "** length unit: not known")) << text;
+}
+
+TEST(InpWriter, FamiliesAndTheFiveNodePyramid) {
+    TempDir dir;
+    const HybridMesh patch = testing::conforming_patch();
+    WriteOptions o;
+    o.inp_family = InpFamily::HeatTransfer;
+    write_inp(patch, dir / "h.inp", o);
+    const std::string heat = testing::read_text(dir / "h.inp");
+    EXPECT_TRUE(contains(heat, "*ELEMENT, TYPE=DC3D4, ELSET=KIND_TET\n")) << heat;
+    EXPECT_TRUE(contains(heat, "*ELEMENT, TYPE=DC3D8, ELSET=KIND_PYRAMID\n")) << heat;
+    o.inp_family = InpFamily::Coupled;
+    write_inp(patch, dir / "c.inp", o);
+    EXPECT_TRUE(contains(testing::read_text(dir / "c.inp"), "*ELEMENT, TYPE=C3D8T, ELSET=KIND_HEX\n"));
+    o.inp_family = InpFamily::Stress;
+    o.inp_pyramid = InpPyramid::C3D5;
+    write_inp(patch, dir / "p.inp", o);
+    EXPECT_TRUE(contains(testing::read_text(dir / "p.inp"), "*ELEMENT, TYPE=C3D5, ELSET=KIND_PYRAMID\n11, 5, 6, 7, 8, 13\n"));
+    o.inp_family = InpFamily::HeatTransfer;
+    const std::string message = error_of([&] { write_inp(patch, dir / "x.inp", o); });
+    EXPECT_TRUE(contains(message, "C3D5 has no heat-transfer")) << message;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.inp"));
+}
+
+// CalculiX reads at most 20 characters of a number and misreads a 21-character one.
+TEST(InpWriter, NumbersFitTwentyCharactersAndRoundOffIsZero) {
+    char text[32];
+    auto written = [&](double v, double zero_below) {
+        return std::string(text, io::abaqus_number(v, zero_below, text));
+    };
+    EXPECT_EQ(written(12.345678901234567, 0), "12.345678901234567");  // fits: exact
+    EXPECT_EQ(written(0.5, 0), "0.5");
+    for (double v : {1.234567890123456e-05, -1.2345678901234567e-100, -9.876543210987654e+300, 5.169878828456423e-26}) {
+        const std::string s = written(v, 0);
+        EXPECT_LE(s.size(), 20u) << s;
+        EXPECT_NEAR(std::stod(s), v, std::abs(v) * 1e-11) << s;  // 13 or more digits
+    }
+    EXPECT_EQ(written(5.169878828456423e-26, 1e-11), "0");
+    EXPECT_EQ(written(-4.0389678347315804e-28, 1e-11), "0");
+    EXPECT_EQ(written(2e-11, 1e-11), "2e-11");
+
+    // In a file: round-off beside a model of size about 1 becomes 0.
+    TempDir dir;
+    HybridMesh mesh = testing::conforming_patch();
+    mesh.x[0] = 4.0389678347315804e-28;
+    mesh.y[0] = -1.234567890123456e-05;
+    write_inp(mesh, dir / "m.inp");
+    const std::string inp = testing::read_text(dir / "m.inp");
+    EXPECT_TRUE(contains(inp, "*NODE\n1, 0, -1.2345678901235e-05, ")) << inp.substr(0, 2000);
 }
 
 TEST(InpWriter, FaceOfNoCellIsAnErrorAndLeavesNoFile) {

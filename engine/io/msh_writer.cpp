@@ -11,6 +11,7 @@
 #include "engine/io/group_order.hpp"
 #include "engine/io/layout_check.hpp"
 #include "engine/io/mesh_io.hpp"
+#include "engine/io/mesh_notes.hpp"
 #include "engine/io/msh_format.hpp"
 
 namespace tubemesh {
@@ -56,10 +57,12 @@ int entity_tag(std::size_t id, const AtomicFile& out) {
 
 class MshWriter {
 public:
-    MshWriter(const HybridMesh& mesh, AtomicFile& out, bool binary) : mesh_(mesh), out_(out), binary_(binary) {}
+    MshWriter(const HybridMesh& mesh, AtomicFile& out, bool binary, const MeshDescription* description)
+        : mesh_(mesh), out_(out), binary_(binary), description_(description) {}
 
     void write() {
         mesh_format();
+        comments();
         physical_names();
         entities();
         nodes();
@@ -77,6 +80,17 @@ private:
             out_.write("\n");
         }
         out_.write("$EndMeshFormat\n");
+    }
+
+    // Gmsh and meshio skip a section they do not know; this one tells a reader the length unit
+    // and where each surface group is. Always text.
+    void comments() {
+        out_.write("$Comments\n");
+        for (const std::string& line : mesh_notes(mesh_, description_)) {
+            out_.write(line);
+            out_.write("\n");
+        }
+        out_.write("$EndComments\n");
     }
 
     // Always text, also in binary files.
@@ -257,16 +271,18 @@ private:
     const HybridMesh& mesh_;
     AtomicFile& out_;
     bool binary_;
+    const MeshDescription* description_;
     bool line_start_ = true;
 };
 
 }  // namespace
 }  // namespace io
 
-void write_msh(const HybridMesh& mesh, const std::filesystem::path& path, MshEncoding encoding) {
+void write_msh(const HybridMesh& mesh, const std::filesystem::path& path, MshEncoding encoding,
+               const MeshDescription* description) {
     io::check_layout_for_writing(mesh, path);
     io::AtomicFile out(path);
-    io::MshWriter(mesh, out, encoding == MshEncoding::Binary).write();
+    io::MshWriter(mesh, out, encoding == MshEncoding::Binary, description).write();
     out.commit();
 }
 

@@ -1,30 +1,30 @@
-// VTK XML UnstructuredGrid (.vtu) writer for ParaView and meshio.
+// VTK XML writers for ParaView and meshio: .vtu (the volume cells) and .vtm (a multiblock of
+// one .vtu per region and per surface group, each block named after its group).
 //
 // Encoding: every DataArray is format="binary" inline: one base64 stream of a UInt64 byte
 // count followed by the little-endian values (header_type="UInt64", no compression). VTK and
 // meshio both read this form; raw appended data would be smaller but is not valid XML, which
-// trips up generic XML tools.
+// trips up generic XML tools. A grid holds only the points its elements use.
 //
-// Content: one piece with the volume cells (tets, pyramids, hexes) followed by the boundary
-// faces (triangles, then quads), each kind in mesh order, so the surface groups - the tube
-// walls pipe_k, the other B-rep faces face_k - are in the file as well as the regions.
-// All groups share one numbering, regions first: group r is region_names[r] and group R + g
-// is surface_group_names[g] (R regions), so one Threshold on "group" shows one group.
-// Cell data:
-//   dim      UInt8   3 volume cell, 2 boundary face (Threshold dim 3..3: the volume alone)
-//   kind     UInt8   0 tetrahedron, 1 pyramid, 2 hexahedron (CellKind), 3 triangle, 4 quad
-//   group    UInt32  the group id above
-//   quality  Float64 cells: the primary measure (tet collapse, pyramid / hex scaled Jacobian);
-//                    a boundary face repeats the value of the cell it bounds (NaN if no cell
-//                    has it, as in partial meshes), so colouring by quality shows the same
-//                    colours outside whether the faces are drawn or hidden
-// Field data (before the piece): one Int32 array per group, named after the group, holding
-// (group id, dim) - the form meshio gives Gmsh physical groups (field_data[name] = [tag,
-// dim]). VTK keys field arrays by name, so a name already used by an earlier group gets
-// "_2", "_3", ... appended. An XML comment at the top lists the same table.
+// Cell data of volume cells:
+//   kind             UInt8   0 tetrahedron, 1 pyramid, 2 hexahedron (CellKind)
+//   group            UInt32  the region id (names in the field data and the comment)
+//   quality          Float64 the paper's measure: tet collapse, pyramid and hex scaled Jacobian
+//   scaled_jacobian  Float64 Verdict's, every kind (standard_measures.hpp)
+//   min_dihedral     Float64 tets, degrees (NaN for other kinds)
+//   aspect_ratio     Float64 tets (NaN for other kinds)
+//   condition        Float64 hexes (NaN for other kinds)
+// Boundary faces (.vtm only): kind 3 triangle, 4 quad; group, the surface group id; quality,
+// the value of the cell the face bounds (NaN if no cell has it, as in partial meshes).
+// Field data: one Int32 array per group named after it, holding (id, dim) - the form meshio
+// gives Gmsh physical groups. An XML comment at the top lists the same, the kinds, the length
+// unit and where each surface group is. (The kind is also the VTK cell type ParaView shows.)
+#include <sys/stat.h>
+
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -32,8 +32,10 @@
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/base64_writer.hpp"
 #include "engine/io/boundary_cell_faces.hpp"
+#include "engine/io/group_order.hpp"
 #include "engine/io/layout_check.hpp"
 #include "engine/io/mesh_io.hpp"
+#include "engine/io/mesh_notes.hpp"
 #include "engine/quality/quality.hpp"
 
 namespace tubemesh {
@@ -41,18 +43,16 @@ namespace tubemesh {
 namespace io {
 namespace {
 
+constexpr std::array<FaceKind, kFaceKindCount> kAllFaceKinds = {FaceKind::Tri, FaceKind::Quad};
+
 constexpr std::uint8_t vtk_cell_type(CellKind k) {
     return k == CellKind::Tet ? 10 : k == CellKind::Pyramid ? 14 : 12;
 }
 constexpr std::uint8_t vtk_cell_type(FaceKind k) { return k == FaceKind::Tri ? 5 : 9; }
-
-// "kind" values: the cell kinds, then the face kinds.
 constexpr std::uint8_t kind_value(CellKind k) { return static_cast<std::uint8_t>(k); }
 constexpr std::uint8_t kind_value(FaceKind k) {
     return static_cast<std::uint8_t>(kCellKindCount + static_cast<int>(k));
 }
-
-constexpr std::array<FaceKind, kFaceKindCount> kAllFaceKinds = {FaceKind::Tri, FaceKind::Quad};
 
 // XML comments may not contain "--".
 std::string comment_safe(const std::string& text) {
@@ -82,114 +82,135 @@ std::string attribute_safe(const std::string& text) {
     return s;
 }
 
-struct VtuGroup {
-    std::string name;        // as in the mesh
-    std::string field_name;  // distinct over all groups
-    std::uint8_t dim;
-};
+constexpr std::size_t kMeasures = 5;
+constexpr std::array<const char*, kMeasures> kMeasureNames = {"quality", "scaled_jacobian", "min_dihedral",
+                                                              "aspect_ratio", "condition"};
+constexpr std::array<CellMeasure, kMeasures> kMeasureOf = {CellMeasure::Primary, CellMeasure::ScaledJacobian,
+                                                           CellMeasure::MinDihedral, CellMeasure::AspectRatio,
+                                                           CellMeasure::Condition};
 
-// Regions, then surface groups: index = group id.
-std::vector<VtuGroup> group_table(const HybridMesh& mesh) {
-    std::vector<VtuGroup> groups;
-    std::set<std::string> taken;
-    auto add = [&](const std::string& name, std::uint8_t dim) {
-        std::string field = name;
-        for (int n = 2; !taken.insert(field).second; ++n) field = name + "_" + std::to_string(n);
-        groups.push_back({name, field, dim});
-    };
-    for (const std::string& r : mesh.region_names) add(r, 3);
-    for (const std::string& g : mesh.surface_group_names) add(g, 2);
-    return groups;
+// Every measure of every cell, per kind in cell order.
+using CellMeasures = std::array<std::array<std::vector<double>, kMeasures>, kCellKindCount>;
+
+CellMeasures measure_cells(const HybridMesh& mesh, const std::filesystem::path& path) {
+    CellMeasures m;
+    for (CellKind k : kAllCellKinds)
+        for (std::size_t i = 0; i < kMeasures; ++i) {
+            auto& values = m[static_cast<int>(k)][i];
+            values = cell_measure(mesh, k, kMeasureOf[i]);
+            if (values.size() != mesh.cell_count(k))
+                throw Error("internal error: a quality measure gave the wrong number of values for '" + path.string() +
+                            "'");
+        }
+    return m;
 }
 
-using CellQuality = std::array<std::vector<double>, kCellKindCount>;  // per kind, in cell order
-using FaceQuality = std::array<std::vector<double>, kFaceKindCount>;
-
-// Per face kind, in face order: the quality of the cell that has the face (NaN if none).
-FaceQuality face_quality(const HybridMesh& mesh, const CellQuality& cell) {
-    const auto owners = boundary_cell_faces(mesh);
-    FaceQuality q;
-    for (FaceKind k : kAllFaceKinds)
-        for (const CellFaceRef& ref : owners[static_cast<int>(k)])
-            q[static_cast<int>(k)].push_back(ref.cell == kNoIndex ? std::numeric_limits<double>::quiet_NaN()
-                                                                  : cell[static_cast<int>(ref.kind)][ref.cell]);
-    return q;
-}
-
-// One block of the piece: the elements of one cell or face kind.
-struct Block {
+// One kind's part of a grid: `elements` of the mesh block, in that order.
+struct GridBlock {
     const std::vector<index_t>* nodes;
     int size;  // nodes per element
     std::uint8_t vtk_type;
-    std::uint8_t kind;  // the "kind" value
-    std::uint8_t dim;
-    const std::vector<index_t>* ids;  // region or surface group per element
-    index_t first_group;              // group id of ids' 0
-    const std::vector<double>* quality;
-    std::size_t count() const { return ids->size(); }
+    std::uint8_t kind;
+    const std::vector<index_t>* ids;      // group per element of the whole block
+    std::vector<index_t> elements;
+    std::vector<const std::vector<double>*> data;  // per cell-data array, over the whole block
 };
-using Blocks = std::array<Block, kCellKindCount + kFaceKindCount>;
 
-// Cells, then faces: the element order of the file.
-Blocks blocks_of(const HybridMesh& mesh, const CellQuality& cell_quality, const FaceQuality& face_quality) {
-    Blocks b{};
-    std::size_t i = 0;
-    for (CellKind k : kAllCellKinds)
-        b[i++] = {&mesh.block(k).nodes, node_count(k), vtk_cell_type(k), kind_value(k), 3,
-                  &mesh.block(k).region, 0, &cell_quality[static_cast<int>(k)]};
-    const auto first_surface_group = static_cast<index_t>(mesh.region_names.size());
-    for (FaceKind k : kAllFaceKinds)
-        b[i++] = {&mesh.block(k).nodes, face_size(k), vtk_cell_type(k), kind_value(k), 2,
-                  &mesh.block(k).group, first_surface_group, &face_quality[static_cast<int>(k)]};
+// What one .vtu holds: blocks of elements, their cell data and the field data.
+struct Grid {
+    std::vector<std::string> data_names;  // Float64 cell data, one per GridBlock::data entry
+    std::vector<GridBlock> blocks;
+    std::vector<std::pair<std::string, std::array<std::int32_t, 2>>> fields;
+    std::vector<std::string> comment;
+};
+
+GridBlock cell_block(const HybridMesh& mesh, CellKind k, std::vector<index_t> elements, const CellMeasures& m) {
+    GridBlock b{&mesh.block(k).nodes, node_count(k), vtk_cell_type(k), kind_value(k), &mesh.block(k).region,
+                std::move(elements), {}};
+    for (const auto& values : m[static_cast<int>(k)]) b.data.push_back(&values);
     return b;
+}
+
+GridBlock face_block(const HybridMesh& mesh, FaceKind k, std::vector<index_t> elements, const std::vector<double>& quality) {
+    return {&mesh.block(k).nodes, face_size(k),          vtk_cell_type(k), kind_value(k),
+            &mesh.block(k).group, std::move(elements), {&quality}};
+}
+
+std::vector<index_t> all_of(std::size_t count) {
+    std::vector<index_t> v(count);
+    for (std::size_t i = 0; i < count; ++i) v[i] = static_cast<index_t>(i);
+    return v;
+}
+
+// Field data shared by every grid: the regions and surface groups, names made distinct (VTK
+// keys field arrays by name).
+std::vector<std::pair<std::string, std::array<std::int32_t, 2>>> name_fields(const HybridMesh& mesh) {
+    std::vector<std::pair<std::string, std::array<std::int32_t, 2>>> fields;
+    std::set<std::string> taken;
+    auto add = [&](const std::string& name, std::int32_t id, std::int32_t dim) {
+        std::string field = name;
+        for (int n = 2; !taken.insert(field).second; ++n) field = name + "_" + std::to_string(n);
+        fields.push_back({field, {id, dim}});
+    };
+    for (std::size_t r = 0; r < mesh.region_names.size(); ++r) add(mesh.region_names[r], static_cast<std::int32_t>(r), 3);
+    for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g)
+        add(mesh.surface_group_names[g], static_cast<std::int32_t>(g), 2);
+    return fields;
+}
+
+std::vector<std::string> comment_lines(const HybridMesh& mesh, const MeshDescription* description, const std::string& what) {
+    std::vector<std::string> lines{"tubemesh hybrid mesh: " + what};
+    lines.push_back("cell data: kind (0 tetrahedron, 1 pyramid, 2 hexahedron, 3 triangle, 4 quad), group (a volume cell's "
+                    "region id, a boundary face's surface group id; names in the field data), quality (the paper's: tet "
+                    "collapse, pyramid and hex scaled Jacobian; a face repeats its cell's), scaled_jacobian, "
+                    "min_dihedral and aspect_ratio (Verdict's), condition (hexes)");
+    for (std::size_t r = 0; r < mesh.region_names.size(); ++r)
+        lines.push_back(std::string("region ") + std::to_string(r) + ": " + mesh.region_names[r]);
+    for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g)
+        lines.push_back(std::string("surface group ") + std::to_string(g) + ": " + mesh.surface_group_names[g]);
+    for (const std::string& line : mesh_notes(mesh, description)) lines.push_back(line);
+    return lines;
 }
 
 class VtuWriter {
 public:
-    VtuWriter(const HybridMesh& mesh, const CellQuality& cell_quality, const FaceQuality& face_quality,
-              AtomicFile& out)
-        : mesh_(mesh), groups_(group_table(mesh)), blocks_(blocks_of(mesh, cell_quality, face_quality)), out_(out) {}
+    VtuWriter(const HybridMesh& mesh, const Grid& grid, AtomicFile& out) : mesh_(mesh), grid_(grid), out_(out) {
+        // Only the points the elements use, in mesh order.
+        local_.assign(mesh_.point_count(), kNoIndex);
+        for (const GridBlock& b : grid_.blocks)
+            for (index_t e : b.elements)
+                for (int k = 0; k < b.size; ++k) local_[(*b.nodes)[std::size_t{e} * b.size + k]] = 0;
+        for (index_t p = 0; p < mesh_.point_count(); ++p)
+            if (local_[p] == 0) {
+                local_[p] = static_cast<index_t>(points_.size());
+                points_.push_back(p);
+            }
+        for (const GridBlock& b : grid_.blocks) {
+            cells_ += b.elements.size();
+            connectivity_ += b.elements.size() * static_cast<std::size_t>(b.size);
+        }
+    }
 
     void write() {
-        std::uint64_t cells = 0, connectivity = 0;
-        for (const Block& k : blocks_) {
-            cells += k.count();
-            connectivity += k.nodes->size();
-        }
-        out_.write("<?xml version=\"1.0\"?>\n");
-        legend();
-        out_.write("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        out_.write("<?xml version=\"1.0\"?>\n<!--\n");
+        for (const std::string& line : grid_.comment) out_.write("  " + comment_safe(line) + "\n");
+        out_.write("-->\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
                    "header_type=\"UInt64\">\n  <UnstructuredGrid>\n");
         field_data();
         out_.write("    <Piece NumberOfPoints=\"");
-        out_.write_number(mesh_.point_count());
+        out_.write_number(points_.size());
         out_.write("\" NumberOfCells=\"");
-        out_.write_number(cells);
+        out_.write_number(cells_);
         out_.write("\">\n      <Points>\n");
         points();
         out_.write("      </Points>\n      <Cells>\n");
-        cell_arrays(cells, connectivity);
+        cell_arrays();
         out_.write("      </Cells>\n      <CellData Scalars=\"quality\">\n");
-        cell_data(cells);
+        cell_data();
         out_.write("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
     }
 
 private:
-    void legend() {
-        out_.write("<!-- tubemesh hybrid mesh: volume cells, then boundary faces. Cell data: dim (3 cell, "
-                   "2 boundary face), kind (0 tetrahedron, 1 pyramid, 2 hexahedron, 3 triangle, 4 quad), "
-                   "group (id, names below and in the field data), quality (tet collapse; pyramid and hex "
-                   "scaled Jacobian; a face repeats its cell's value).\n");
-        for (std::size_t g = 0; g < groups_.size(); ++g) {
-            out_.write("     group ");
-            out_.write_number(g);
-            out_.write(groups_[g].dim == 3 ? ": region \"" : ": surface group \"");
-            out_.write(comment_safe(groups_[g].name));
-            out_.write("\"\n");
-        }
-        out_.write("-->\n");
-    }
-
     // Opens a DataArray, lets `fill` put exactly `bytes` bytes of values, closes it.
     // `tuples` > 0 writes NumberOfTuples, which VTK needs for field data.
     template <class Fill>
@@ -219,90 +240,205 @@ private:
     }
 
     void field_data() {
-        if (groups_.empty()) return;
+        if (grid_.fields.empty()) return;
         out_.write("    <FieldData>\n");
-        for (std::size_t g = 0; g < groups_.size(); ++g)
+        for (const auto& [name, value] : grid_.fields)
             data_array(
-                "Int32", groups_[g].field_name, 1, 8,
+                "Int32", name, 1, 8,
                 [&](Base64Writer& b) {
-                    b.put(static_cast<std::int32_t>(g));
-                    b.put(std::int32_t{groups_[g].dim});
+                    b.put(value[0]);
+                    b.put(value[1]);
                 },
                 2);
         out_.write("    </FieldData>\n");
     }
 
     void points() {
-        const std::uint64_t n = mesh_.point_count();
-        data_array("Float64", "Points", 3, 24 * n, [&](Base64Writer& b) {
-            for (index_t i = 0; i < n; ++i) {
-                b.put(mesh_.x[i]);
-                b.put(mesh_.y[i]);
-                b.put(mesh_.z[i]);
+        data_array("Float64", "Points", 3, 24 * points_.size(), [&](Base64Writer& b) {
+            for (index_t p : points_) {
+                b.put(mesh_.x[p]);
+                b.put(mesh_.y[p]);
+                b.put(mesh_.z[p]);
             }
         });
     }
 
-    void cell_arrays(std::uint64_t cells, std::uint64_t connectivity) {
-        data_array("Int64", "connectivity", 1, 8 * connectivity, [&](Base64Writer& b) {
-            for (const Block& k : blocks_)
-                for (index_t node : *k.nodes) b.put(std::int64_t{node});
+    void cell_arrays() {
+        data_array("Int64", "connectivity", 1, 8 * connectivity_, [&](Base64Writer& b) {
+            for (const GridBlock& k : grid_.blocks)
+                for (index_t e : k.elements)
+                    for (int n = 0; n < k.size; ++n)
+                        b.put(std::int64_t{local_[(*k.nodes)[std::size_t{e} * k.size + n]]});
         });
-        data_array("Int64", "offsets", 1, 8 * cells, [&](Base64Writer& b) {
+        data_array("Int64", "offsets", 1, 8 * cells_, [&](Base64Writer& b) {
             std::int64_t end = 0;
-            for (const Block& k : blocks_)
-                for (std::size_t i = 0; i < k.count(); ++i) {
+            for (const GridBlock& k : grid_.blocks)
+                for (std::size_t i = 0; i < k.elements.size(); ++i) {
                     end += k.size;
                     b.put(end);
                 }
         });
-        each_cell_value("UInt8", "types", [](const Block& k) { return k.vtk_type; }, cells);
+        per_element("UInt8", "types", [](const GridBlock& k, index_t) { return k.vtk_type; });
     }
 
-    // One value per element of a block, the same for the whole block.
     template <class Value>
-    void each_cell_value(const char* type, const char* name, Value&& value, std::uint64_t cells) {
-        using T = decltype(value(blocks_[0]));
-        data_array(type, name, 1, sizeof(T) * cells, [&](Base64Writer& b) {
-            for (const Block& k : blocks_)
-                for (std::size_t i = 0; i < k.count(); ++i) b.put(value(k));
+    void per_element(const char* type, const std::string& name, Value&& value) {
+        using T = decltype(value(grid_.blocks[0], 0));
+        data_array(type, name, 1, sizeof(T) * cells_, [&](Base64Writer& b) {
+            for (const GridBlock& k : grid_.blocks)
+                for (index_t e : k.elements) b.put(value(k, e));
         });
     }
 
-    void cell_data(std::uint64_t cells) {
-        each_cell_value("UInt8", "dim", [](const Block& k) { return k.dim; }, cells);
-        each_cell_value("UInt8", "kind", [](const Block& k) { return k.kind; }, cells);
-        data_array("UInt32", "group", 1, 4 * cells, [&](Base64Writer& b) {
-            for (const Block& k : blocks_)
-                for (index_t id : *k.ids) b.put(static_cast<std::uint32_t>(k.first_group + id));
-        });
-        data_array("Float64", "quality", 1, 8 * cells, [&](Base64Writer& b) {
-            for (const Block& k : blocks_)
-                for (double q : *k.quality) b.put(q);
-        });
+    void cell_data() {
+        if (grid_.blocks.empty()) return;
+        per_element("UInt8", "kind", [](const GridBlock& k, index_t) { return k.kind; });
+        per_element("UInt32", "group", [](const GridBlock& k, index_t e) { return static_cast<std::uint32_t>((*k.ids)[e]); });
+        for (std::size_t d = 0; d < grid_.data_names.size(); ++d)
+            per_element("Float64", grid_.data_names[d], [d](const GridBlock& k, index_t e) {
+                return d < k.data.size() ? (*k.data[d])[e] : std::numeric_limits<double>::quiet_NaN();
+            });
     }
 
     const HybridMesh& mesh_;
-    const std::vector<VtuGroup> groups_;
-    const Blocks blocks_;
+    const Grid& grid_;
     AtomicFile& out_;
+    std::vector<index_t> local_;   // mesh point -> grid point
+    std::vector<index_t> points_;  // grid point -> mesh point
+    std::uint64_t cells_ = 0, connectivity_ = 0;
 };
+
+Grid volume_grid(const HybridMesh& mesh, const MeshDescription* description, const CellMeasures& m,
+                 const std::array<std::vector<index_t>, kCellKindCount>& elements) {
+    Grid grid;
+    grid.data_names.assign(kMeasureNames.begin(), kMeasureNames.end());
+    for (CellKind k : kAllCellKinds) grid.blocks.push_back(cell_block(mesh, k, elements[static_cast<int>(k)], m));
+    grid.fields = name_fields(mesh);
+    grid.comment = comment_lines(mesh, description, "volume cells");
+    return grid;
+}
+
+// Per face kind, in face order: the primary quality of the cell that has the face.
+std::array<std::vector<double>, kFaceKindCount> face_quality(const HybridMesh& mesh, const CellMeasures& m) {
+    const auto owners = boundary_cell_faces(mesh);
+    std::array<std::vector<double>, kFaceKindCount> q;
+    for (FaceKind k : kAllFaceKinds)
+        for (const CellFaceRef& ref : owners[static_cast<int>(k)])
+            q[static_cast<int>(k)].push_back(ref.cell == kNoIndex ? std::numeric_limits<double>::quiet_NaN()
+                                                                  : m[static_cast<int>(ref.kind)][0][ref.cell]);
+    return q;
+}
+
+// A file name part from a group name: letters, digits, '-', '_' and '.' kept, the rest '_'.
+std::string file_part(const std::string& name) {
+    std::string s = name;
+    for (char& c : s)
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.'))
+            c = '_';
+    if (s.empty() || s.front() == '.') return "g" + s;
+    return s;
+}
 
 }  // namespace
 }  // namespace io
 
-void write_vtu(const HybridMesh& mesh, const std::filesystem::path& path) {
+void write_vtu(const HybridMesh& mesh, const std::filesystem::path& path, const MeshDescription* description) {
     io::check_layout_for_writing(mesh, path);
-    io::CellQuality quality;
-    for (CellKind k : kAllCellKinds) {
-        quality[static_cast<int>(k)] = cell_quality(mesh, k);
-        if (quality[static_cast<int>(k)].size() != mesh.cell_count(k))
-            throw Error("internal error: cell_quality gave the wrong number of values for '" + path.string() + "'");
-    }
-    const io::FaceQuality face_quality = io::face_quality(mesh, quality);
+    const io::CellMeasures measures = io::measure_cells(mesh, path);
+    std::array<std::vector<index_t>, kCellKindCount> elements;
+    for (CellKind k : kAllCellKinds) elements[static_cast<int>(k)] = io::all_of(mesh.cell_count(k));
+    const io::Grid grid = io::volume_grid(mesh, description, measures, elements);
     io::AtomicFile out(path);
-    io::VtuWriter(mesh, quality, face_quality, out).write();
+    io::VtuWriter(mesh, grid, out).write();
     out.commit();
+}
+
+void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const MeshDescription* description) {
+    namespace fs = std::filesystem;
+    io::check_layout_for_writing(mesh, path);
+    const io::CellMeasures measures = io::measure_cells(mesh, path);
+    const auto face_quality = io::face_quality(mesh, measures);
+
+    // Every grid with its block name and file, regions first.
+    struct Part {
+        std::string block;  // "volume" or "boundary"
+        std::string name;
+        std::string file;   // relative to the .vtm's folder
+        io::Grid grid;
+    };
+    std::vector<Part> parts;
+    const std::string folder = path.stem().string();
+    std::array<io::GroupOrder, kCellKindCount> by_region;
+    for (CellKind k : kAllCellKinds)
+        by_region[static_cast<int>(k)] = io::order_by_group(mesh.block(k).region, mesh.region_names.size());
+    for (std::size_t r = 0; r < mesh.region_names.size(); ++r) {
+        std::array<std::vector<index_t>, kCellKindCount> elements;
+        bool any = false;
+        for (CellKind k : kAllCellKinds) {
+            const auto cells = by_region[static_cast<int>(k)].group(r);
+            elements[static_cast<int>(k)].assign(cells.begin(), cells.end());
+            any = any || !cells.empty();
+        }
+        if (!any) continue;
+        io::Grid grid = io::volume_grid(mesh, description, measures, elements);
+        grid.comment.front() = "tubemesh hybrid mesh: region " + mesh.region_names[r];
+        parts.push_back({"volume", mesh.region_names[r],
+                         folder + "/volume_" + io::file_part(mesh.region_names[r]) + ".vtu", std::move(grid)});
+    }
+    std::array<io::GroupOrder, kFaceKindCount> by_group;
+    for (FaceKind k : io::kAllFaceKinds)
+        by_group[static_cast<int>(k)] = io::order_by_group(mesh.block(k).group, mesh.surface_group_names.size());
+    for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g) {
+        io::Grid grid;
+        grid.data_names = {"quality"};
+        bool any = false;
+        for (FaceKind k : io::kAllFaceKinds) {
+            const auto faces = by_group[static_cast<int>(k)].group(g);
+            grid.blocks.push_back(io::face_block(mesh, k, {faces.begin(), faces.end()}, face_quality[static_cast<int>(k)]));
+            any = any || !faces.empty();
+        }
+        if (!any) continue;
+        grid.fields = io::name_fields(mesh);
+        grid.comment = io::comment_lines(mesh, description, "surface group " + mesh.surface_group_names[g]);
+        const std::string role = io::group_role(mesh, description, g);
+        parts.push_back({"boundary", mesh.surface_group_names[g] + (role.empty() ? "" : " (" + role + ")"),
+                         folder + "/boundary_" + io::file_part(mesh.surface_group_names[g]) + ".vtu", std::move(grid)});
+    }
+
+    // The folder beside the .vtm; removed again if this call made it and fails.
+    const fs::path dir = path.parent_path() / folder;
+    std::error_code ec;
+    const bool made = fs::create_directory(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        throw Error("cannot write '" + path.string() + "': cannot create the folder '" + dir.string() + "' for its blocks" +
+                    (ec ? ": " + ec.message() : std::string(": a file of that name is in the way")));
+    try {
+        // Every block complete under a temporary name before any is renamed into place.
+        std::vector<std::unique_ptr<io::AtomicFile>> files;
+        for (const Part& p : parts) {
+            files.push_back(std::make_unique<io::AtomicFile>(path.parent_path() / p.file));
+            io::VtuWriter(mesh, p.grid, *files.back()).write();
+        }
+        io::AtomicFile index(path);
+        index.write("<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+                    "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <vtkMultiBlockDataSet>\n");
+        int block = 0;
+        for (const char* name : {"volume", "boundary"}) {
+            index.write("    <Block index=\"" + std::to_string(block++) + "\" name=\"" + name + "\">\n");
+            int set = 0;
+            for (const Part& p : parts)
+                if (p.block == name)
+                    index.write("      <DataSet index=\"" + std::to_string(set++) + "\" name=\"" +
+                                io::attribute_safe(p.name) + "\" file=\"" + io::attribute_safe(p.file) + "\"/>\n");
+            index.write("    </Block>\n");
+        }
+        index.write("  </vtkMultiBlockDataSet>\n</VTKFile>\n");
+        for (auto& f : files) f->commit();
+        index.commit();
+    } catch (...) {
+        if (made) fs::remove_all(dir, ec);
+        throw;
+    }
 }
 
 }  // namespace tubemesh

@@ -7,21 +7,23 @@
 
 namespace tubemesh {
 
-void write_mesh(const HybridMesh& mesh, const std::filesystem::path& path) {
+void write_mesh(const HybridMesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".msh")
-        write_msh(mesh, path, MshEncoding::Binary);
+        write_msh(mesh, path, options.msh_encoding, options.description);
     else if (ext == ".vtu")
-        write_vtu(mesh, path);
+        write_vtu(mesh, path, options.description);
+    else if (ext == ".vtm")
+        write_vtm(mesh, path, options.description);
     else if (ext == ".inp")
-        write_inp(mesh, path);
+        write_inp(mesh, path, options);
     else
         throw Error("cannot write '" + path.string() + "': " +
                     (ext.empty() ? std::string("the file name has no extension")
                                  : "unknown mesh format '" + ext + "'") +
-                    "; use .msh (Gmsh), .vtu (ParaView) or .inp (Abaqus)");
+                    "; use .msh (Gmsh), .vtu or .vtm (ParaView) or .inp (Abaqus, CalculiX)");
 }
 
 }  // namespace tubemesh

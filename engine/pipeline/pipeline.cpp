@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -37,6 +38,20 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// Each ring's wall nodes at its two end stations, named after the pipe's wall group.
+void add_rims(const SweepResult& sweep, const HybridMesh& mesh, MeshDescription& description) {
+    for (const TubeRing& ring : sweep.rings) {
+        const std::string& pipe = mesh.surface_group_names[ring.wall_group];
+        for (int e = 0; e < 2; ++e) {
+            NamedNodeSet rim{pipe + (e == 0 ? "_inlet" : "_outlet"), {}};
+            const index_t station = e == 0 ? 0 : ring.stations - 1;
+            for (index_t k = 0; k < ring.circumferential; ++k) rim.nodes.push_back(ring.node(station, 0, k));
+            std::sort(rim.nodes.begin(), rim.nodes.end());
+            description.node_sets.push_back(std::move(rim));
+        }
+    }
+}
+
 void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
     PhaseProgress progress(opt.progress, "sweep", in.geometry.tubes.size());
@@ -44,6 +59,7 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
     if (sweep.sweep_size <= 0) sweep.sweep_size = in.geometry.sweep_size;
     sweep.store_boundary_faces = true;
     if (!in.geometry.tubes.empty()) out.sweep = sweep_tubes(out.mesh, in.geometry.tubes, in.surfaces, sweep);
+    add_rims(out.sweep, out.mesh, out.description);
     const SweepStats& s = out.sweep.stats;
     PhaseReport r{"sweep", seconds_since(t0), {}};
     r.counts = {{"tubes", double(s.tubes)},

@@ -47,6 +47,7 @@
 #include "engine/core/types.hpp"
 #include "engine/geometry/tube_data.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
+#include "engine/mesh/mesh_description.hpp"
 #include "engine/pipeline/progress.hpp"
 #include "engine/pyramids/build_pyramids.hpp"
 #include "engine/quality/quality.hpp"
@@ -146,6 +147,10 @@ struct PhaseReport {
 
 struct PipelineResult {
     HybridMesh mesh;
+    // For the files and the report: after Sweep each pipe's rims, node sets "pipe_<k>_inlet"
+    // (the wall nodes of the tube's first end, host1) and "pipe_<k>_outlet"; geom adds the
+    // length unit and the surface groups' CAD kinds and aliases.
+    MeshDescription description;
     std::vector<PhaseReport> phases;  // one per phase run, in order
     Stage reached = Stage::Sweep;
     // The report's totals, filled at the end of run_pipeline (geom::mesh_file adds its own

@@ -1,5 +1,6 @@
 #include "engine/quality/quality.hpp"
 #include "engine/mesh/vec3_ops.hpp"
+#include "engine/quality/standard_measures.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -240,21 +241,56 @@ std::vector<double> hex_condition_numbers(const HybridMesh& mesh) {
     return measure_cells<CellKind::Hex>(mesh, [](const auto& p) { return hex_quality(p).condition; });
 }
 
+std::vector<double> cell_measure(const HybridMesh& mesh, CellKind kind, CellMeasure measure) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    switch (measure) {
+        case CellMeasure::Primary: return cell_quality(mesh, kind);
+        case CellMeasure::ScaledJacobian:
+            if (kind == CellKind::Tet) return measure_cells<CellKind::Tet>(mesh, tet_scaled_jacobian);
+            if (kind == CellKind::Hex) return measure_cells<CellKind::Hex>(mesh, hex_verdict_scaled_jacobian);
+            return cell_quality(mesh, kind);
+        case CellMeasure::MinDihedral:
+            if (kind == CellKind::Tet) return measure_cells<CellKind::Tet>(mesh, tet_min_dihedral_degrees);
+            break;
+        case CellMeasure::AspectRatio:
+            if (kind == CellKind::Tet) return measure_cells<CellKind::Tet>(mesh, tet_aspect_ratio);
+            break;
+        case CellMeasure::Condition:
+            if (kind == CellKind::Hex) return hex_condition_numbers(mesh);
+            break;
+    }
+    return std::vector<double>(mesh.cell_count(kind), nan);
+}
+
 QualitySummary summarize_quality(const HybridMesh& mesh) {
     QualitySummary s;
-    s.tet_collapse = summarize(cell_quality(mesh, CellKind::Tet), 0.0, 1.0);
     s.pyramid_jacobian = summarize(cell_quality(mesh, CellKind::Pyramid), 0.0, 1.0);
 
-    // One pass for both hex measures: they share every corner's edge vectors.
+    // One pass per kind for all its measures.
+    const std::size_t tets = mesh.block(CellKind::Tet).nodes.size() / 4;
+    std::vector<double> collapse(tets), tet_jacobian(tets), dihedral(tets), aspect(tets);
+    for_each_cell<CellKind::Tet>(mesh, [&](std::size_t i, const std::array<Vec3, 4>& p) {
+        collapse[i] = tet_collapse(p);
+        tet_jacobian[i] = tet_scaled_jacobian(p);
+        dihedral[i] = tet_min_dihedral_degrees(p);
+        aspect[i] = tet_aspect_ratio(p);
+    });
+    s.tet_collapse = summarize(collapse, 0.0, 1.0);
+    s.tet_scaled_jacobian = summarize(tet_jacobian, 0.0, 1.0);
+    s.tet_min_dihedral = summarize(dihedral, 0.0, 90.0);
+    s.tet_aspect_ratio = summarize(aspect, 1.0, 4.0);
+
     const std::size_t hexes = mesh.block(CellKind::Hex).nodes.size() / 8;
-    std::vector<double> jacobian(hexes), condition(hexes);
+    std::vector<double> jacobian(hexes), condition(hexes), verdict(hexes);
     for_each_cell<CellKind::Hex>(mesh, [&](std::size_t i, const std::array<Vec3, 8>& p) {
         const HexQuality q = hex_quality(p);
         jacobian[i] = q.scaled_jacobian;
         condition[i] = q.condition;
+        verdict[i] = std::min(q.scaled_jacobian, hex_centre_scaled_jacobian(p));
     });
     s.hex_scaled_jacobian = summarize(jacobian, 0.0, 1.0);
     s.hex_condition = summarize(condition, 1.0, 4.0);
+    s.hex_verdict_jacobian = summarize(verdict, 0.0, 1.0);
     return s;
 }
 

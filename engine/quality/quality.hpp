@@ -72,6 +72,12 @@ struct QualitySummary {
     MeasureSummary pyramid_jacobian;        // classes over [0, 1]
     MeasureSummary hex_scaled_jacobian;     // classes over [0, 1]
     MeasureSummary hex_condition;           // classes over [1, 4]
+    // The standard measures (standard_measures.hpp, Verdict's definitions). The pyramid's is
+    // pyramid_jacobian above, which is already Verdict's.
+    MeasureSummary tet_scaled_jacobian;     // classes over [0, 1]
+    MeasureSummary tet_min_dihedral;        // degrees, classes over [0, 90]
+    MeasureSummary tet_aspect_ratio;        // classes over [1, 4]
+    MeasureSummary hex_verdict_jacobian;    // classes over [0, 1]
 };
 
 // The primary measure of every cell of one kind (tet collapse, pyramid scaled Jacobian,
@@ -80,6 +86,17 @@ std::vector<double> cell_quality(const HybridMesh& mesh, CellKind kind);
 
 // Hex condition numbers in cell order. Parallel over cells.
 std::vector<double> hex_condition_numbers(const HybridMesh& mesh);
+
+// A measure that one kind or all kinds have, per cell in cell order; NaN for the cells of a
+// kind the measure does not apply to. Parallel over cells.
+enum class CellMeasure {
+    Primary,         // the paper's: tet collapse, pyramid and hex scaled Jacobian (cell_quality)
+    ScaledJacobian,  // Verdict's, every kind
+    MinDihedral,     // tets, degrees
+    AspectRatio,     // tets
+    Condition,       // hexes
+};
+std::vector<double> cell_measure(const HybridMesh& mesh, CellKind kind, CellMeasure measure);
 
 // All four summaries. Parallel over cells; the result does not depend on the thread count.
 QualitySummary summarize_quality(const HybridMesh& mesh);

@@ -1,25 +1,31 @@
-"""Reads one mesh in its three formats - .msh with Gmsh, .vtu and .inp with meshio - and
-prints, per format, which elements each group holds, so a test can check that the formats
-agree element for element and not just in counts. JSON:
+"""Reads one mesh in its four formats - .msh with Gmsh, .vtu, the .vtm's blocks and .inp with
+meshio - and prints, per format, which elements each group holds, so a test can check that
+the formats agree element for element and not just in counts. JSON:
 
-  {"msh"|"vtu"|"inp": {"dim:name": [element count, digest]},
+  {"msh"|"vtu"|"vtm"|"inp": {"dim:name": [element count, digest]},
    "points": {"vtu": max |difference| to the .msh nodes (-1: other count), "inp": the same},
    "nset_mismatch": [surfaces whose *NSET is not the set of their faces' nodes]}
 
-An element is its node set (0-based indices, sorted): the same cell or face in every format.
-The digest is a SHA-1 over a group's sorted elements. Groups without elements are left out.
+An element is its node set (0-based indices, sorted, each once: a pyramid written as a brick
+with its apex repeated is the same element): the same cell or face in every format. The
+digest is a SHA-1 over a group's sorted elements. Groups without elements are left out.
   .msh  physical groups (Gmsh numbers nodes by tag; tubemesh writes tag = index + 1)
-  .vtu  field data name -> [id, dim] and the "group" cell data (engine/io/vtu_writer.cpp)
+  .vtu  the volume cells: field data name -> [id, dim] and the "group" cell data
+  .vtm  one .vtu per group, named in the index; a block's points are matched to the .msh's
+        by their coordinates (the same doubles)
   .inp  element sets as meshio reads them; *SURFACE, TYPE=ELEMENT, which meshio skips, is
-        read here: "element label, Sn" resolved with the face table of the Abaqus manual.
-        KIND_C3D4 ... (one set per element type) are reported like the regions.
+        read here: "element set, Sn" resolved with the face table of the Abaqus manual.
+        The other element sets (KIND_*, EALL, the face sets NAME_Sk) are reported like the
+        regions.
 
-usage: group_members.py FILE.msh FILE.vtu FILE.inp
+usage: group_members.py FILE.msh FILE.vtu FILE.inp [FILE.vtm]
 """
 import collections
 import hashlib
 import json
+import os
 import sys
+import xml.etree.ElementTree as ET
 
 import gmsh
 import meshio
@@ -34,6 +40,10 @@ ABAQUS_FACES = {
     "C3D5": [(1, 2, 3, 4), (1, 5, 2), (2, 5, 3), (3, 5, 4), (4, 5, 1)],
     "C3D8": [(1, 2, 3, 4), (5, 8, 7, 6), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 8, 4), (4, 8, 5, 1)],
 }
+
+
+def element(nodes):
+    return tuple(sorted({int(v) for v in np.ravel(list(nodes))}))
 
 
 def summarize(members):
@@ -63,7 +73,7 @@ def read_msh(path):
                 for t, n in zip(types, nodes):
                     per = gmsh.model.mesh.getElementProperties(t)[3]
                     for e in np.asarray(n, dtype=np.int64).reshape(-1, per):
-                        members[key].append(tuple(sorted(int(v) - 1 for v in e)))
+                        members[key].append(element(int(v) - 1 for v in e))
     finally:
         gmsh.finalize()
     return summarize(members), points
@@ -72,13 +82,27 @@ def read_msh(path):
 def read_vtu(path):
     mesh = meshio.read(path)
     name_of = {(int(v[0]), int(v[1])): name for name, v in mesh.field_data.items()}
-    dims = mesh.cell_data["dim"]
-    groups = mesh.cell_data["group"]
     members = collections.defaultdict(list)
-    for block, dim, group in zip(mesh.cells, dims, groups):
-        for cell, d, g in zip(block.data, dim, group):
-            members[f"{int(d)}:{name_of[(int(g), int(d))]}"].append(tuple(sorted(int(v) for v in cell)))
+    for block, group in zip(mesh.cells, mesh.cell_data["group"]):
+        for cell, g in zip(block.data, group):
+            members[f"3:{name_of[(int(g), 3)]}"].append(element(cell))
     return summarize(members), mesh.points
+
+
+def read_vtm(path, msh_points):
+    index = {tuple(p): i for i, p in enumerate(msh_points)}
+    members = collections.defaultdict(list)
+    folder = os.path.dirname(path)
+    for block in ET.parse(path).getroot().iter("Block"):
+        dim = 3 if block.get("name") == "volume" else 2
+        for data_set in block.iter("DataSet"):
+            name = data_set.get("name").split(" (")[0]  # "face_3 (top)": the group and its alias
+            mesh = meshio.read(os.path.join(folder, data_set.get("file")))
+            to_msh = [index[tuple(p)] for p in mesh.points]
+            for cells in mesh.cells:
+                for cell in cells.data:
+                    members[f"{dim}:{name}"].append(element(to_msh[v] for v in cell))
+    return summarize(members)
 
 
 def inp_elements(path):
@@ -100,7 +124,25 @@ def inp_elements(path):
     return elements
 
 
+def inp_element_sets(path):
+    """Element set name -> labels, for the sets that list labels (the face sets NAME_Sk)."""
+    sets = collections.defaultdict(list)
+    name = None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("*"):
+                name = None
+                if line.upper().startswith("*ELSET"):
+                    name = line.split("ELSET=")[1].split(",")[0].strip()
+                continue
+            if name and line[0].isdigit():
+                sets[name] += [int(v) for v in line.split(",")]
+    return sets
+
+
 def inp_surfaces(path, elements):
+    """*SURFACE, TYPE=ELEMENT: "element label or element set, Sn" lines."""
+    sets = inp_element_sets(path)
     members = collections.defaultdict(list)
     name = None
     with open(path) as f:
@@ -111,10 +153,12 @@ def inp_surfaces(path, elements):
                     name = line.split("NAME=")[1].split(",")[0].strip()
                 continue
             if name:
-                label, face = (v.strip() for v in line.split(","))
-                etype, nodes = elements[int(label)]
-                corners = ABAQUS_FACES[etype][int(face[1:]) - 1]
-                members[name].append(tuple(sorted(nodes[c - 1] for c in corners)))
+                owner, face = (v.strip() for v in line.split(","))
+                for label in sets[owner] if not owner.isdigit() else [int(owner)]:
+                    etype, nodes = elements[label]
+                    shape = etype.lstrip("D").rstrip("T")
+                    corners = ABAQUS_FACES[shape][int(face[1:]) - 1]
+                    members[name].append(element(nodes[c - 1] for c in corners))
     return members
 
 
@@ -124,7 +168,7 @@ def read_inp(path):
     for name, per_block in mesh.cell_sets.items():
         for block, ids in zip(mesh.cells, per_block):
             for i in ids:
-                members[f"3:{name}"].append(tuple(sorted(int(v) for v in block.data[i])))
+                members[f"3:{name}"].append(element(block.data[i]))
     surfaces = inp_surfaces(path, inp_elements(path))
     nset_mismatch = []
     for name, faces in surfaces.items():
@@ -139,6 +183,7 @@ def main():
     msh, msh_points = read_msh(sys.argv[1])
     vtu, vtu_points = read_vtu(sys.argv[2])
     inp, inp_points, nset_mismatch = read_inp(sys.argv[3])
+    vtm = read_vtm(sys.argv[4], msh_points) if len(sys.argv) > 4 else {}
 
     def difference(points):
         if points.shape != msh_points.shape:
@@ -148,6 +193,7 @@ def main():
     print(json.dumps({
         "msh": msh,
         "vtu": vtu,
+        "vtm": vtm,
         "inp": inp,
         "points": {"vtu": difference(vtu_points), "inp": difference(inp_points)},
         "nset_mismatch": nset_mismatch,

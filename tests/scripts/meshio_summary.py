@@ -1,14 +1,17 @@
 """Reads a mesh file with meshio and prints what meshio sees, as JSON: point count, cell
 counts per meshio cell type, names of cell data, cell sets and point sets with their sizes,
 and for tubemesh's .vtu: how many cells carry each "group" value, the field data
-(group name -> [id, dim]) and the quality range.
+(group name -> [id, dim]) and the quality range. A .vtm gives {"blocks": {"BLOCK/NAME": the
+same for that block's .vtu}}.
 
-usage: meshio_summary.py FILE.vtu|FILE.inp
+usage: meshio_summary.py FILE.vtu|FILE.inp|FILE.vtm
 """
 import collections
 import json
 import math
+import os
 import sys
+import xml.etree.ElementTree as ET
 
 import meshio
 from meshio.abaqus import _abaqus
@@ -18,8 +21,8 @@ from meshio.abaqus import _abaqus
 _abaqus.abaqus_to_meshio_type.setdefault("C3D5", "pyramid")
 
 
-def main():
-    mesh = meshio.read(sys.argv[1])
+def summary(path):
+    mesh = meshio.read(path)
     cells = collections.Counter()
     for block in mesh.cells:
         cells[block.type] += len(block.data)
@@ -44,7 +47,20 @@ def main():
         out["quality_nan"] = len(values) - len(finite)
         if finite:
             out["quality_min"] = min(finite)
-    print(json.dumps(out))
+    return out
+
+
+def main():
+    path = sys.argv[1]
+    if not path.endswith(".vtm"):
+        print(json.dumps(summary(path)))
+        return
+    blocks = {}
+    for block in ET.parse(path).getroot().iter("Block"):
+        for data_set in block.iter("DataSet"):
+            key = block.get("name") + "/" + data_set.get("name")
+            blocks[key] = summary(os.path.join(os.path.dirname(path), data_set.get("file")))
+    print(json.dumps({"blocks": blocks}))
 
 
 if __name__ == "__main__":

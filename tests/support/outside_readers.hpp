@@ -63,18 +63,16 @@ inline nlohmann::json physical_groups(const HybridMesh& m) {
 
 // meshio's cell counts per cell type. The .vtu holds the boundary faces too, the .inp only
 // the cells (its surfaces are faces of cells).
-inline Counts meshio_counts(const HybridMesh& m, bool with_faces) {
+// meshio's cell counts per type: of a .vtu (the volume cells) or of a .inp, whose pyramids
+// are bricks with the apex repeated.
+inline Counts meshio_counts(const HybridMesh& m, bool inp) {
     Counts c;
     auto put = [&](const char* type, index_t n) {
-        if (n > 0) c[type] = static_cast<int>(n);
+        if (n > 0) c[type] += static_cast<int>(n);
     };
     put("tetra", m.cell_count(CellKind::Tet));
-    put("pyramid", m.cell_count(CellKind::Pyramid));
+    put(inp ? "hexahedron" : "pyramid", m.cell_count(CellKind::Pyramid));
     put("hexahedron", m.cell_count(CellKind::Hex));
-    if (with_faces) {
-        put("triangle", m.face_count(FaceKind::Tri));
-        put("quad", m.face_count(FaceKind::Quad));
-    }
     return c;
 }
 
@@ -94,8 +92,7 @@ inline Counts group_sizes(const HybridMesh& m) {
 inline nlohmann::json vtu_field_data(const HybridMesh& m) {
     nlohmann::json f = nlohmann::json::object();
     for (std::size_t r = 0; r < m.region_names.size(); ++r) f[m.region_names[r]] = {r, 3};
-    for (std::size_t g = 0; g < m.surface_group_names.size(); ++g)
-        f[m.surface_group_names[g]] = {m.region_names.size() + g, 2};
+    for (std::size_t g = 0; g < m.surface_group_names.size(); ++g) f[m.surface_group_names[g]] = {g, 2};
     return f;
 }
 

@@ -51,6 +51,9 @@ struct MeshArgs {
     std::string report;
     std::string until_name = stage_name(kLastStage);
     bool quiet = false;
+    bool msh_ascii = false;
+    std::string inp_family = "stress";
+    std::string inp_pyramid = "hex";
     CLI::Option* size_option = nullptr;
     CLI::Option* sweep_option = nullptr;
 };
@@ -81,8 +84,8 @@ void require_writable(const std::string& path) {
 void check_outputs(const MeshArgs& a, Stage until) {
     for (const std::string& out : a.outputs) {
         const std::string ext = lower_extension(out);
-        if (ext != ".msh" && ext != ".vtu" && ext != ".inp")
-            throw Error("cannot write '" + out + "': unknown mesh format (use .msh, .vtu or .inp)");
+        if (ext != ".msh" && ext != ".vtu" && ext != ".vtm" && ext != ".inp")
+            throw Error("cannot write '" + out + "': unknown mesh format (use .msh, .vtu, .vtm or .inp)");
         if (ext == ".inp" && (until == Stage::Surface || until == Stage::Pyramids))
             throw Error("cannot write '" + out + "': Abaqus .inp needs every boundary face on a cell, which a " +
                         stage_name(until) + "-stage mesh does not have yet (use .msh or .vtu)");
@@ -101,13 +104,26 @@ void write_text(const std::string& path, const std::string& text) {
     file.commit();
 }
 
+WriteOptions write_options(const MeshArgs& a) {
+    WriteOptions o;
+    o.msh_encoding = a.msh_ascii ? MshEncoding::Ascii : MshEncoding::Binary;
+    o.inp_family = a.inp_family == "heat" ? InpFamily::HeatTransfer
+                   : a.inp_family == "coupled" ? InpFamily::Coupled
+                                               : InpFamily::Stress;
+    o.inp_pyramid = a.inp_pyramid == "c3d5" ? InpPyramid::C3D5 : InpPyramid::CollapsedHex;
+    if (o.inp_pyramid == InpPyramid::C3D5 && o.inp_family != InpFamily::Stress)
+        throw Error("--inp-pyramid c3d5 has no heat-transfer or coupled variant: use --inp-pyramid hex with --inp-family " +
+                    a.inp_family);
+    return o;
+}
+
 // All files or none: a failure removes what this run already wrote.
-void write_all(const HybridMesh& mesh, const std::vector<std::string>& outputs, const std::string& report,
-               const std::string& report_text) {
+void write_all(const HybridMesh& mesh, const std::vector<std::string>& outputs, const WriteOptions& options,
+               const std::string& report, const std::string& report_text) {
     std::vector<std::string> written;
     try {
         for (const std::string& out : outputs) {
-            write_mesh(mesh, out);
+            write_mesh(mesh, out, options);
             written.push_back(out);
         }
         if (!report.empty()) write_text(report, report_text);
@@ -148,8 +164,8 @@ Command add_mesh_command(CLI::App& app) {
     cmd->add_option("IN", args->input,
                     "CAD file (.step .stp .iges .igs .brep); without it, the built-in dam block (paper-ex1)");
     cmd->add_option("-o,--output", args->outputs,
-                    "Mesh file to write (.msh, .vtu, .inp); repeat for several. Default without IN: "
-                    "dam_block.msh and dam_block.vtu")
+                    "Mesh file to write (.msh Gmsh, .vtu ParaView volume, .vtm ParaView blocks per group, .inp "
+                    "Abaqus / CalculiX); repeat for several. Default without IN: dam_block.msh and dam_block.vtu")
         ->allow_extra_args(false);  // `-o a.msh IN` must not take IN as a second output
     args->size_option = cmd->add_option("--size", args->size,
                                         "Overall mesh size S (default: bounding-box diagonal / 25, at least 1.3 St)");
@@ -196,6 +212,15 @@ Command add_mesh_command(CLI::App& app) {
     cmd->add_option("--until", args->until_name, "Last stage to run: " + stages + " (default: the last)")
         ->option_text("STAGE");
     cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
+    cmd->add_flag("--msh-ascii", args->msh_ascii, "Write .msh files as text (default: binary)");
+    cmd->add_option("--inp-family", args->inp_family,
+                    "Element family of .inp files: stress (C3D4/C3D8, default; CalculiX uses them for heat transfer "
+                    "too), heat (Abaqus DC3D4/DC3D8), coupled (C3D4T/C3D8T)")
+        ->check(CLI::IsMember({"stress", "heat", "coupled"}));
+    cmd->add_option("--inp-pyramid", args->inp_pyramid,
+                    "Pyramids in .inp files: hex (a C3D8 with the apex repeated, which CalculiX and Abaqus read; "
+                    "default) or c3d5 (the 5-node pyramid, stress family only)")
+        ->check(CLI::IsMember({"hex", "c3d5"}));
     cmd->footer(
         "Progress: one updating line per phase on a terminal, plain 'progress:' lines otherwise.\n"
         "Partial stages (--until) are checked for what they hold (engine/pipeline/stage_check.hpp); .inp needs "
@@ -210,6 +235,7 @@ Command add_mesh_command(CLI::App& app) {
             args->outputs = {"dam_block.msh", "dam_block.vtu"};
         }
         check_outputs(*args, *until);
+        WriteOptions write = write_options(*args);
         ProgressLine progress(ProgressLine::mode_for(args->quiet));
         const MeshOptions options = mesh_options(*args, progress);
         auto say = [&](const std::string& s) {
@@ -232,7 +258,8 @@ Command add_mesh_command(CLI::App& app) {
 
         const PipelineResult& r = run.result;
         const std::string report_text = args->report.empty() ? "" : run_json(run, args->outputs).dump(2) + "\n";
-        write_all(r.mesh, args->outputs, args->report, report_text);
+        write.description = &r.description;
+        write_all(r.mesh, args->outputs, write, args->report, report_text);
         if (args->quiet) return 0;
 
         say(fmt::format("{} ({}): {} tube{}, S = {:.6g}, St = {:.6g}", run.source, run.format, run.tubes,
@@ -249,6 +276,7 @@ Command add_mesh_command(CLI::App& app) {
                         mesh.cell_count(CellKind::Tet), mesh.face_count(FaceKind::Tri),
                         mesh.face_count(FaceKind::Quad)));
         fmt::print("\n{}\n", run_table(run));
+        for (const std::string& line : group_lines(run)) say(line);
         for (const std::string& out : args->outputs) say("wrote " + out);
         if (!args->report.empty()) say("wrote " + args->report);
         return 0;

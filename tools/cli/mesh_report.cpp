@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "engine/io/mesh_notes.hpp"
+#include "engine/mesh/surface_groups.hpp"
 #include "tools/cli/quality_table.hpp"
 
 namespace tubemesh::cli {
@@ -27,7 +29,31 @@ nlohmann::json pairs_json(const std::vector<std::pair<std::string, double>>& pai
     return o;
 }
 
+nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+// Per surface group: where it is (alias, CAD kind, measured area, centroid, normal if flat).
+nlohmann::json groups_json(const HybridMesh& m, const MeshDescription& d) {
+    const std::vector<SurfaceGroupGeometry> geometry = surface_group_geometry(m);
+    nlohmann::json groups = nlohmann::json::array();
+    for (std::size_t g = 0; g < geometry.size(); ++g) {
+        const SurfaceGroupInfo* info = d.group(g);
+        nlohmann::json j = {{"name", m.surface_group_names[g]},
+                            {"where", io::group_role(m, &d, g)},
+                            {"surface_kind", info ? info->surface_kind : ""},
+                            {"faces", geometry[g].faces},
+                            {"area", geometry[g].area},
+                            {"centroid", vec_json(geometry[g].centroid)}};
+        if (geometry[g].flat) j["normal"] = vec_json(geometry[g].normal);
+        groups.push_back(std::move(j));
+    }
+    return groups;
+}
+
 }  // namespace
+
+std::vector<std::string> group_lines(const geom::MeshRun& run) {
+    return io::mesh_notes(run.result.mesh, &run.result.description);
+}
 
 std::vector<std::string> phase_lines(const geom::MeshRun& run) {
     std::vector<std::string> lines;
@@ -64,6 +90,8 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
     for (const Violation& v : r.check.violations)
         violations.push_back({{"kind", violation_name(v.kind)}, {"count", v.count}});
     const index_t cells = m.cell_count();
+    nlohmann::json node_sets = nlohmann::json::object();
+    for (const NamedNodeSet& n : r.description.node_sets) node_sets[n.name] = n.nodes.size();
     return {{"source", run.source},
             {"format", run.format},
             {"stage", stage_name(r.reached)},
@@ -75,8 +103,10 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
             {"tets", m.cell_count(CellKind::Tet)},
             {"boundary_triangles", m.face_count(FaceKind::Tri)},
             {"boundary_quads", m.face_count(FaceKind::Quad)},
+            {"length_unit", r.description.length_unit},
             {"regions", m.region_names},
-            {"surface_groups", m.surface_group_names},
+            {"surface_groups", groups_json(m, r.description)},
+            {"node_sets", node_sets},
             {"phases", phases},
             {"total_seconds", r.seconds},
             {"elements_per_second", r.seconds > 0 ? cells / r.seconds : 0.0},

@@ -8,12 +8,12 @@ namespace {
 
 void add_measure_rows(std::string& out, const char* kind, const char* measure, const MeasureSummary& m,
                       bool with_count, double seconds = -1) {
-    if (with_count) out += fmt::format("{:<18} {:<14} {:>12}\n", kind, "Num. element", m.count);
-    if (with_count && seconds >= 0) out += fmt::format("{:<18} {:<14} {:>10.3f} s\n", "", "Wall time", seconds);
+    if (with_count) out += fmt::format("{:<18} {:<16} {:>12}\n", kind, "Num. element", m.count);
+    if (with_count && seconds >= 0) out += fmt::format("{:<18} {:<16} {:>10.3f} s\n", "", "Wall time", seconds);
     if (m.count == 0) return;
-    out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Min. {}", measure), m.min);
-    out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Avg. {}", measure), m.mean);
-    out += fmt::format("{:<18} {:<14} {:>12.6f}\n", "", fmt::format("Max. {}", measure), m.max);
+    out += fmt::format("{:<18} {:<16} {:>12.6f}\n", "", fmt::format("Min. {}", measure), m.min);
+    out += fmt::format("{:<18} {:<16} {:>12.6f}\n", "", fmt::format("Avg. {}", measure), m.mean);
+    out += fmt::format("{:<18} {:<16} {:>12.6f}\n", "", fmt::format("Max. {}", measure), m.max);
 }
 
 std::string histogram_line(const char* label, const MeasureSummary& m) {
@@ -30,10 +30,16 @@ nlohmann::json measure_json(const MeasureSummary& m) {
 std::string quality_rows(const QualitySummary& q, index_t nodes, const KindTimes& times) {
     std::string out;
     add_measure_rows(out, "Tetrahedral mesh", "metric", q.tet_collapse, true, times.tet);
+    add_measure_rows(out, "", "SJ", q.tet_scaled_jacobian, false);
+    add_measure_rows(out, "", "dihedral", q.tet_min_dihedral, false);
+    add_measure_rows(out, "", "aspect", q.tet_aspect_ratio, false);
     add_measure_rows(out, "Pyramidal mesh", "metric", q.pyramid_jacobian, true, times.pyramid);
     add_measure_rows(out, "Hexahedral mesh", "J_m", q.hex_scaled_jacobian, true, times.hex);
     add_measure_rows(out, "", "Cond", q.hex_condition, false);
-    out += fmt::format("{:<18} {:<14} {:>12}\n", "Nodes", "", nodes);
+    add_measure_rows(out, "", "SJ", q.hex_verdict_jacobian, false);
+    out += fmt::format("{:<18} {:<16} {:>12}\n", "Nodes", "", nodes);
+    out += "(metric: the paper's - tet collapse, pyramid scaled Jacobian; SJ, dihedral (min. dihedral angle, degrees) "
+           "and aspect (aspect ratio): Verdict's, as ParaView's Mesh Quality)\n";
     return out;
 }
 
@@ -44,6 +50,9 @@ std::string histograms(const QualitySummary& q) {
     if (q.pyramid_jacobian.count) out += histogram_line("pyramid scaled Jac.", q.pyramid_jacobian);
     if (q.hex_scaled_jacobian.count) out += histogram_line("hex J_m", q.hex_scaled_jacobian);
     if (q.hex_condition.count) out += histogram_line("hex Cond", q.hex_condition);
+    if (q.tet_scaled_jacobian.count) out += histogram_line("tet SJ", q.tet_scaled_jacobian);
+    if (q.tet_min_dihedral.count) out += histogram_line("tet dihedral [0, 90]", q.tet_min_dihedral);
+    if (q.tet_aspect_ratio.count) out += histogram_line("tet aspect [1, 4]", q.tet_aspect_ratio);
     return out;
 }
 
@@ -56,8 +65,8 @@ std::string format_quality_table(const QualitySummary& q, index_t nodes) {
 std::string format_run_table(const QualitySummary& q, index_t nodes, const KindTimes& times, double total_seconds) {
     const index_t cells = q.tet_collapse.count + q.pyramid_jacobian.count + q.hex_scaled_jacobian.count;
     std::string out = quality_rows(q, nodes, times);
-    out += fmt::format("{:<18} {:<14} {:>10.3f} s\n", "Total time", "", total_seconds);
-    out += fmt::format("{:<18} {:<14} {:>12.0f}\n", "Elements / second", "",
+    out += fmt::format("{:<18} {:<16} {:>10.3f} s\n", "Total time", "", total_seconds);
+    out += fmt::format("{:<18} {:<16} {:>12.0f}\n", "Elements / second", "",
                        total_seconds > 0 ? cells / total_seconds : 0.0);
     return out + histograms(q);
 }
@@ -66,7 +75,11 @@ nlohmann::json quality_json(const QualitySummary& q) {
     return {{"tet_collapse", measure_json(q.tet_collapse)},
             {"pyramid_scaled_jacobian", measure_json(q.pyramid_jacobian)},
             {"hex_scaled_jacobian", measure_json(q.hex_scaled_jacobian)},
-            {"hex_condition", measure_json(q.hex_condition)}};
+            {"hex_condition", measure_json(q.hex_condition)},
+            {"tet_scaled_jacobian", measure_json(q.tet_scaled_jacobian)},
+            {"tet_min_dihedral_degrees", measure_json(q.tet_min_dihedral)},
+            {"tet_aspect_ratio", measure_json(q.tet_aspect_ratio)},
+            {"hex_verdict_scaled_jacobian", measure_json(q.hex_verdict_jacobian)}};
 }
 
 }  // namespace tubemesh::cli

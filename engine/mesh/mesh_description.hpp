@@ -1,0 +1,32 @@
+#pragma once
+// What the files and the report say about a mesh beyond the mesh store: the model's length
+// unit, each surface group's CAD surface kind and a name that says where it is, and named node
+// sets (each pipe's inlet and outlet rims). The pipeline adds the rims, geom the rest.
+#include <string>
+#include <vector>
+
+#include "engine/core/types.hpp"
+
+namespace tubemesh {
+
+struct SurfaceGroupInfo {
+    std::string surface_kind;  // the B-rep face's surface: "plane", "cylinder", "B-spline", ...
+    std::string alias;         // where it is on a built block ("top", "upstream", ...); may be empty
+};
+
+struct NamedNodeSet {
+    std::string name;            // e.g. "pipe_1_inlet"
+    std::vector<index_t> nodes;  // ascending
+};
+
+struct MeshDescription {
+    std::string length_unit;  // "metre", "millimetre", "model units", ...; empty when not known
+    std::vector<SurfaceGroupInfo> surface_groups;  // by surface group id; missing ids: unknown
+    std::vector<NamedNodeSet> node_sets;
+
+    const SurfaceGroupInfo* group(std::size_t id) const {
+        return id < surface_groups.size() ? &surface_groups[id] : nullptr;
+    }
+};
+
+}  // namespace tubemesh

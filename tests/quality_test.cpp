@@ -10,6 +10,7 @@
 #include <span>
 
 #include "engine/quality/quality.hpp"
+#include "engine/quality/standard_measures.hpp"
 
 namespace {
 
@@ -52,6 +53,52 @@ std::array<Vec3, 8> tapered_hex() {
 // Unit square base, apex above its centre at height h.
 std::array<Vec3, 5> square_pyramid(double h) {
     return {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, h}}};
+}
+
+// ---------------------------------------------------------------------------------------
+// The standard measures (Verdict's definitions), worked out by hand.
+
+TEST(StandardMeasures, RegularTet) {
+    EXPECT_NEAR(tet_scaled_jacobian(regular_tet()), 1.0, kTight);
+    EXPECT_NEAR(tet_min_dihedral_degrees(regular_tet()), std::acos(1.0 / 3.0) * 180 / M_PI, 1e-9);  // 70.53
+    EXPECT_NEAR(tet_aspect_ratio(regular_tet()), 1.0, kTight);
+}
+
+// The corner tet (unit edges along the axes): the largest corner product of edge lengths is
+// 1·sqrt2·sqrt2 = 2; the slanted face meets the axis faces at acos(1/sqrt3) = 54.74 degrees;
+// the longest edge sqrt2 over 2 sqrt6 times the inradius 3V / (3/2 + sqrt3/2).
+TEST(StandardMeasures, CornerTet) {
+    const std::array<Vec3, 4> p{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    EXPECT_NEAR(tet_scaled_jacobian(p), std::sqrt(2.0) / 2, kTight);
+    EXPECT_NEAR(tet_min_dihedral_degrees(p), std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
+    const double inradius = 0.5 / (1.5 + std::sqrt(3.0) / 2);
+    EXPECT_NEAR(tet_aspect_ratio(p), std::sqrt(2.0) / (2 * std::sqrt(6.0) * inradius), 1e-12);
+}
+
+TEST(StandardMeasures, FlatAndInvertedTets) {
+    const std::array<Vec3, 4> flat{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}};
+    EXPECT_EQ(tet_scaled_jacobian(flat), 0.0);
+    EXPECT_EQ(tet_aspect_ratio(flat), kInf);
+    auto inverted = regular_tet();
+    std::swap(inverted[1], inverted[2]);
+    EXPECT_NEAR(tet_scaled_jacobian(inverted), -1.0, kTight);
+    EXPECT_EQ(tet_aspect_ratio(inverted), kInf);
+    EXPECT_NEAR(tet_min_dihedral_degrees(inverted), 70.5288, 1e-4);  // not oriented, as in Verdict
+}
+
+// Verdict's hex scaled Jacobian adds the centre to the corners: the same on a cube and on a
+// sheared hex (1/sqrt(1 + s^2) everywhere), never above J_m.
+TEST(StandardMeasures, HexScaledJacobian) {
+    EXPECT_NEAR(hex_verdict_scaled_jacobian(unit_cube()), 1.0, kTight);
+    EXPECT_NEAR(hex_verdict_scaled_jacobian(sheared_hex(0.5)), 1 / std::sqrt(1.25), kTight);
+    EXPECT_NEAR(hex_centre_scaled_jacobian(sheared_hex(0.5)), 1 / std::sqrt(1.25), kTight);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    for (int i = 0; i < 100; ++i) {
+        auto p = unit_cube();
+        for (Vec3& v : p) v = {v.x + jitter(rng), v.y + jitter(rng), v.z + jitter(rng)};
+        EXPECT_LE(hex_verdict_scaled_jacobian(p), hex_quality(p).scaled_jacobian);
+    }
 }
 
 // ---------------------------------------------------------------------------------------

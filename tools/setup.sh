@@ -10,7 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev
   # tests
   libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
-  python3 python3-gmsh python3-meshio python3-numpy
+  python3 python3-gmsh python3-meshio python3-numpy python3-vtk9 calculix-ccx
   # benchmark peers
   gmsh tetgen valgrind time
 )

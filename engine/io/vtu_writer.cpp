@@ -420,7 +420,9 @@ void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const 
             io::VtuWriter(mesh, p.grid, *files.back()).write();
         }
         io::AtomicFile index(path);
-        index.write("<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+        index.write("<?xml version=\"1.0\"?>\n<!--\n  tubemesh hybrid mesh: a block per region and per surface group\n");
+        for (const std::string& line : io::mesh_notes(mesh, description)) index.write("  " + io::comment_safe(line) + "\n");
+        index.write("-->\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
                     "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <vtkMultiBlockDataSet>\n");
         int block = 0;
         for (const char* name : {"volume", "boundary"}) {

@@ -103,6 +103,29 @@ TEST_F(FullMeshFiles, MeshioReadsTheVtuWithItsGroups) {
     for (const auto& [name, block] : blocks["blocks"].items()) EXPECT_EQ(block["quality_nan"], 0) << name;
 }
 
+// VTK itself (ParaView's reader): the .vtu's standard measures are Verdict's, as
+// vtkMeshQuality computes them, and the .vtm's blocks carry the group names.
+TEST_F(FullMeshFiles, VtkReadsTheVtuAndTheVtmBlocks) {
+    const json vtu = run_script("vtk_check.py", {path("m.vtu").string()});
+    ASSERT_TRUE(vtu.contains("differences")) << vtu.dump();
+    EXPECT_EQ(vtu["cells"]["10"], mesh_.cell_count(CellKind::Tet));
+    EXPECT_EQ(vtu["cells"]["14"], mesh_.cell_count(CellKind::Pyramid));
+    EXPECT_EQ(vtu["cells"]["12"], mesh_.cell_count(CellKind::Hex));
+    for (const auto& [measure, difference] : vtu["differences"].items()) {
+        ASSERT_FALSE(difference.is_null()) << measure;
+        EXPECT_LT(difference.get<double>(), 1e-9) << measure;
+    }
+    const json vtm = run_script("vtk_check.py", {path("m.vtm").string()});
+    const Counts sizes = testing::group_sizes(mesh_);
+    Counts blocks;
+    for (const auto& [name, cells] : vtm["blocks"].items()) {
+        const bool volume = name.rfind("volume/", 0) == 0;
+        const std::string group = name.substr(name.find('/') + 1, name.find(" (") - name.find('/') - 1);
+        blocks[(volume ? "3:" : "2:") + group] = cells.get<int>();
+    }
+    EXPECT_EQ(blocks, sizes) << vtm.dump();
+}
+
 TEST_F(FullMeshFiles, MeshioReadsTheInpWithItsSets) {
     const json seen = run_script("meshio_summary.py", {path("m.inp").string()});
     EXPECT_EQ(seen["points"], mesh_.point_count());

@@ -1,9 +1,10 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--tet-relax R] [--max-elements N] [--report FILE.json] [--quiet] [--solid K] [--until STAGE]`: mesh a CAD solid
+// [--tet-relax R] [--max-elements N] [--report FILE.json] [--quiet] [--solid K] [--until STAGE]
+// [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a CAD solid
 // (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
-// progress, print the phases and Table 1, and write the mesh to every OUT (format by
-// extension: .msh, .vtu, .inp) and the report as JSON.
+// progress, print the phases, Table 1 and where each surface group is, and write the mesh to
+// every OUT (format by extension: .msh, .vtu, .vtm, .inp) and the report as JSON.
 //
 // Safety: arguments, output formats and output folders are checked before any work; the mesh
 // passes the stage's check (engine/pipeline/stage_check.hpp) before any file is written; each

@@ -147,11 +147,16 @@ TEST_F(FullMeshFiles, TheFourFormatsHoldTheSameGroups) {
     EXPECT_EQ(seen["vtm"], seen["msh"]);
     for (const auto& [key, v] : seen["msh"].items()) {
         EXPECT_EQ(seen["inp"][key], v) << key;
-        if (key.rfind("3:", 0) == 0) EXPECT_EQ(seen["vtu"][key], v) << key;  // the .vtu: volume cells only
+        if (key.rfind("3:", 0) == 0) {
+            EXPECT_EQ(seen["vtu"][key], v) << key;  // the .vtu: volume cells only
+        }
     }
     const std::regex extra("3:(KIND_TET|KIND_PYRAMID|KIND_HEX|EALL|.*_S[1-6])");
-    for (const auto& [key, v] : seen["inp"].items())  // besides: kinds, every element, face sets
-        if (!seen["msh"].contains(key)) EXPECT_TRUE(std::regex_match(key, extra)) << key;
+    for (const auto& [key, v] : seen["inp"].items()) {  // besides: kinds, every element, face sets
+        if (!seen["msh"].contains(key)) {
+            EXPECT_TRUE(std::regex_match(key, extra)) << key;
+        }
+    }
     EXPECT_EQ(seen["points"]["vtu"], 0.0);  // binary: the same doubles
     // Text: the shortest form that reads back exactly, round-off below 1e-12 of the model as 0.
     EXPECT_LE(seen["points"]["inp"].get<double>(), 1e-11);

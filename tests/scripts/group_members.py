@@ -124,18 +124,30 @@ def inp_elements(path):
     return elements
 
 
-def inp_element_sets(path):
-    """Element set name -> labels, for the sets that list labels (the face sets NAME_Sk)."""
-    sets = collections.defaultdict(list)
-    name = None
+def inp_blocks(path, keyword):
+    """(header line, data lines) of every *KEYWORD block; comments and other blocks skipped."""
+    header, lines = None, []
     with open(path) as f:
         for line in f:
             if line.startswith("*"):
-                name = None
-                if line.upper().startswith("*ELSET"):
-                    name = line.split("ELSET=")[1].split(",")[0].strip()
-                continue
-            if name and line[0].isdigit():
+                if header:
+                    yield header, lines
+                header, lines = None, []
+                if line.upper().startswith(keyword) and not line.startswith("**"):
+                    header = line
+            elif header:
+                lines.append(line)
+    if header:
+        yield header, lines
+
+
+def inp_element_sets(path):
+    """Element set name -> labels, for the sets that list labels (the face sets NAME_Sk)."""
+    sets = collections.defaultdict(list)
+    for header, lines in inp_blocks(path, "*ELSET"):
+        name = header.split("ELSET=")[1].split(",")[0].strip()
+        for line in lines:
+            if line[0].isdigit():
                 sets[name] += [int(v) for v in line.split(",")]
     return sets
 
@@ -144,21 +156,17 @@ def inp_surfaces(path, elements):
     """*SURFACE, TYPE=ELEMENT: "element label or element set, Sn" lines."""
     sets = inp_element_sets(path)
     members = collections.defaultdict(list)
-    name = None
-    with open(path) as f:
-        for line in f:
-            if line.startswith("*"):
-                name = None
-                if line.upper().startswith("*SURFACE") and "TYPE=ELEMENT" in line.upper():
-                    name = line.split("NAME=")[1].split(",")[0].strip()
-                continue
-            if name:
-                owner, face = (v.strip() for v in line.split(","))
-                for label in sets[owner] if not owner.isdigit() else [int(owner)]:
-                    etype, nodes = elements[label]
-                    shape = etype.lstrip("D").rstrip("T")
-                    corners = ABAQUS_FACES[shape][int(face[1:]) - 1]
-                    members[name].append(element(nodes[c - 1] for c in corners))
+    for header, lines in inp_blocks(path, "*SURFACE"):
+        if "TYPE=ELEMENT" not in header.upper():
+            continue
+        name = header.split("NAME=")[1].split(",")[0].strip()
+        for line in lines:
+            owner, face = (v.strip() for v in line.split(","))
+            for label in sets[owner] if not owner.isdigit() else [int(owner)]:
+                etype, nodes = elements[label]
+                shape = etype.lstrip("D").rstrip("T")
+                corners = ABAQUS_FACES[shape][int(face[1:]) - 1]
+                members[name].append(element(nodes[c - 1] for c in corners))
     return members
 
 

@@ -11,7 +11,8 @@
 //   group            UInt32  the region id (names in the field data and the comment)
 //   quality          Float64 the paper's measure: tet collapse, pyramid and hex scaled Jacobian
 //   scaled_jacobian  Float64 Verdict's, every kind (standard_measures.hpp)
-//   min_dihedral     Float64 tets, degrees (NaN for other kinds)
+//   min_dihedral     Float64 tets, the smallest dihedral angle in degrees (NaN for other kinds;
+//                            ParaView's "Min Angle" takes the supplement at two of the six edges)
 //   aspect_ratio     Float64 tets (NaN for other kinds)
 //   condition        Float64 hexes (NaN for other kinds)
 // Boundary faces (.vtm only): kind 3 triangle, 4 quad; group, the surface group id; quality,
@@ -162,8 +163,9 @@ std::vector<std::string> comment_lines(const HybridMesh& mesh, const MeshDescrip
     std::vector<std::string> lines{"tubemesh hybrid mesh: " + what};
     lines.push_back("cell data: kind (0 tetrahedron, 1 pyramid, 2 hexahedron, 3 triangle, 4 quad), group (a volume cell's "
                     "region id, a boundary face's surface group id; names in the field data), quality (the paper's: tet "
-                    "collapse, pyramid and hex scaled Jacobian; a face repeats its cell's), scaled_jacobian, "
-                    "min_dihedral and aspect_ratio (Verdict's), condition (hexes)");
+                    "collapse, pyramid and hex scaled Jacobian; a face repeats its cell's), scaled_jacobian and "
+                    "aspect_ratio (Verdict's), min_dihedral (the smallest dihedral angle of a tet, degrees), "
+                    "condition (hexes)");
     for (std::size_t r = 0; r < mesh.region_names.size(); ++r)
         lines.push_back(std::string("region ") + std::to_string(r) + ": " + mesh.region_names[r]);
     for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g)

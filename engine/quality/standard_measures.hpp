@@ -13,7 +13,9 @@ namespace tubemesh {
 // at a corner (Verdict's tet scaled Jacobian).
 double tet_scaled_jacobian(const std::array<Vec3, 4>& p);
 
-// The smallest of the six dihedral angles, in degrees (Verdict's tet minimum angle).
+// The smallest of the six dihedral angles, in degrees. (Verdict's tet "minimum angle", which
+// ParaView shows, takes the supplement at two of the six edges: its face normals are not
+// oriented alike; it is this value when those two angles are not obtuse.)
 double tet_min_dihedral_degrees(const std::array<Vec3, 4>& p);
 
 // h_max · (sum of the face areas) / (2 sqrt(6) · 3 V): the longest edge over the inradius,

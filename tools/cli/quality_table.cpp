@@ -38,8 +38,9 @@ std::string quality_rows(const QualitySummary& q, index_t nodes, const KindTimes
     add_measure_rows(out, "", "Cond", q.hex_condition, false);
     add_measure_rows(out, "", "SJ", q.hex_verdict_jacobian, false);
     out += fmt::format("{:<18} {:<16} {:>12}\n", "Nodes", "", nodes);
-    out += "(metric: the paper's - tet collapse, pyramid scaled Jacobian; SJ, dihedral (min. dihedral angle, degrees) "
-           "and aspect (aspect ratio): Verdict's, as ParaView's Mesh Quality)\n";
+    out += "(metric: the paper's, tet collapse and pyramid scaled Jacobian; SJ (scaled Jacobian) and aspect (aspect "
+           "ratio): Verdict's, as ParaView's Mesh Quality computes them; dihedral: the smallest dihedral angle, "
+           "degrees)\n";
     return out;
 }
 

@@ -23,7 +23,9 @@ struct ProgressEvent {
     std::uint64_t total = 0;  // 0: the phase does not know how many items it has
 };
 
-// Must not throw. An empty function means nobody listens.
+// An empty function means nobody listens. It may throw to stop the run (the Python module does
+// on Ctrl-C): the exception leaves the phase like the phase's own errors do (oneTBB carries it
+// out of parallel loops) and the run makes no result.
 using ProgressCallback = std::function<void(const ProgressEvent&)>;
 
 class PhaseProgress {

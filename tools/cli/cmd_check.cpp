@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "engine/check/mesh_check.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "engine/quality/quality.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/cli/quality_table.hpp"
+#include "tools/run/check_report.hpp"
+#include "tools/run/quality_table.hpp"
 
 namespace tubemesh::cli {
 
@@ -19,41 +19,6 @@ struct CheckArgs {
     std::string path;
     bool json = false;
 };
-
-const char* set_name(ElementRef::Set s) {
-    switch (s) {
-        case ElementRef::Set::Tet: return "tet";
-        case ElementRef::Set::Pyramid: return "pyramid";
-        case ElementRef::Set::Hex: return "hex";
-        case ElementRef::Set::BoundaryTri: return "boundary triangle";
-        case ElementRef::Set::BoundaryQuad: return "boundary quad";
-    }
-    return "?";
-}
-
-nlohmann::json check_json(const HybridMesh& mesh, const CheckReport& report, const QualitySummary& q) {
-    nlohmann::json violations = nlohmann::json::array();
-    for (const Violation& v : report.violations) {
-        nlohmann::json first = nlohmann::json::array();
-        for (const ElementRef& r : v.first) first.push_back({{"set", set_name(r.set)}, {"index", r.index}});
-        violations.push_back({{"kind", violation_name(v.kind)}, {"count", v.count}, {"first", first}});
-    }
-    return {{"nodes", mesh.point_count()},
-            {"tets", mesh.cell_count(CellKind::Tet)},
-            {"pyramids", mesh.cell_count(CellKind::Pyramid)},
-            {"hexes", mesh.cell_count(CellKind::Hex)},
-            {"boundary_triangles", mesh.face_count(FaceKind::Tri)},
-            {"boundary_quads", mesh.face_count(FaceKind::Quad)},
-            {"valid_and_conforming", report.ok()},
-            {"violations", violations},
-            {"interior_faces", report.interior_faces},
-            {"free_faces", report.boundary_faces},
-            {"volume", report.volume},
-            {"boundary_area", report.boundary_area},
-            {"regions", mesh.region_names},
-            {"surface_groups", mesh.surface_group_names},
-            {"quality", quality_json(q)}};
-}
 
 void print_text(const std::string& path, const HybridMesh& mesh, const CheckReport& report, const QualitySummary& q) {
     fmt::print("{}: {} nodes, {} hexahedra, {} pyramids, {} tetrahedra; {} boundary triangles, {} boundary quads\n",
@@ -65,7 +30,7 @@ void print_text(const std::string& path, const HybridMesh& mesh, const CheckRepo
         fmt::print("valid and conforming\n\n");
     else
         fmt::print("NOT valid or not conforming:\n{}\n", describe(report));
-    fmt::print("{}", format_quality_table(q, mesh.point_count()));
+    fmt::print("{}", run::format_quality_table(q, mesh.point_count()));
 }
 
 }  // namespace
@@ -81,7 +46,7 @@ Command add_check_command(CLI::App& app) {
         const CheckReport report = check_mesh(mesh);
         const QualitySummary quality = summarize_quality(mesh);
         if (args->json)
-            fmt::print("{}\n", check_json(mesh, report, quality).dump(2));
+            fmt::print("{}\n", run::check_json(mesh, report, quality).dump(2));
         else
             print_text(args->path, mesh, report, quality);
         return report.ok() ? 0 : 1;

@@ -4,28 +4,28 @@
 // [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a CAD solid
 // (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
 // progress, print the phases, Table 1 and where each surface group is, and write the mesh to
-// every OUT (format by extension: .msh, .vtu, .vtm, .inp) and the report as JSON.
+// every OUT (format by extension: .msh, .vtu, .vtm, .inp) and the report as JSON. The options
+// and their defaults are run::MeshSettings, shared with the Python module.
 //
 // Safety: arguments, output formats and output folders are checked before any work; the mesh
 // passes the stage's check (engine/pipeline/stage_check.hpp) before any file is written; each
 // file is written to a temporary name and renamed, and if a later file fails the earlier ones
 // of this run are removed. Any error: one line on stderr, exit 2, no output file.
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <cctype>
-#include <cmath>
 #include <filesystem>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "engine/io/atomic_file.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/cli/mesh_report.hpp"
 #include "tools/cli/progress_line.hpp"
+#include "tools/run/mesh_report.hpp"
+#include "tools/run/mesh_settings.hpp"
+#include "tools/run/outputs.hpp"
 
 namespace tubemesh::cli {
 
@@ -33,101 +33,46 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The flags bind to plain values; those that are automatic when absent become settings only
+// when given (run::MeshSettings holds the defaults of the rest).
 struct MeshArgs {
     std::string input;
     std::vector<std::string> outputs;
-    double size = 0;
-    double sweep_size = 0;
-    int circumferential = 0;
-    int layers = 2;
-    MeshOptions defaults;  // the documented defaults of the options below
-    double axial_aspect = defaults.sweep.axial_aspect;
-    double pyramid_height = defaults.pyramids.height_factor;
-    double gradation = defaults.tets.gradation;
-    unsigned tet_parts = defaults.tets.partitions;
-    int tet_relax = defaults.tets.relaxation.iterations;
-    int threads = 0;
-    double max_elements = 0;
-    int solid = 0;
+    run::MeshSettings settings;
+    double size = 0, sweep_size = 0, max_elements = 0;
+    int circumferential = 0, threads = 0, solid = 0;
     std::string report;
     std::string until_name = stage_name(kLastStage);
     bool quiet = false;
     bool msh_ascii = false;
-    std::string inp_family = "stress";
-    std::string inp_pyramid = "hex";
-    CLI::Option* size_option = nullptr;
-    CLI::Option* sweep_option = nullptr;
+    std::string inp_family = run::kInpFamilies[0];
+    std::string inp_pyramid = run::kInpPyramids[0];
+    CLI::Option *size_option = nullptr, *sweep_option = nullptr, *circ_option = nullptr, *threads_option = nullptr,
+                *max_elements_option = nullptr, *solid_option = nullptr;
 };
 
-std::string lower_extension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
+template <class T>
+void take_if_given(std::optional<T>& setting, const CLI::Option* option, T value) {
+    if (option->count() > 0) setting = value;
 }
 
-void require_positive(const CLI::Option* option, double value, const char* name) {
-    if (option->count() > 0 && !(value > 0 && std::isfinite(value)))
-        throw Error(fmt::format("{} must be a positive number, got {}", name, value));
-}
-
-// A file can be created there: its folder exists and is writable, and it is not a folder.
-void require_writable(const std::string& path) {
-    const fs::path p(path);
-    const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec))
-        throw Error("cannot write '" + path + "': the folder '" + dir.string() + "' does not exist");
-    if (::access(dir.c_str(), W_OK) != 0)
-        throw Error("cannot write '" + path + "': the folder '" + dir.string() + "' is not writable");
-    if (fs::is_directory(p, ec)) throw Error("cannot write '" + path + "': it is a folder");
-}
+CLI::Validator in_range(run::Range r) { return CLI::Range(r.lo, r.hi); }
 
 void check_outputs(const MeshArgs& a, Stage until) {
-    for (const std::string& out : a.outputs) {
-        const std::string ext = lower_extension(out);
-        if (ext != ".msh" && ext != ".vtu" && ext != ".vtm" && ext != ".inp")
-            throw Error("cannot write '" + out + "': unknown mesh format (use .msh, .vtu, .vtm or .inp)");
-        if (ext == ".inp" && (until == Stage::Surface || until == Stage::Pyramids))
-            throw Error("cannot write '" + out + "': Abaqus .inp needs every boundary face on a cell, which a " +
-                        stage_name(until) + "-stage mesh does not have yet (use .msh or .vtu)");
-        require_writable(out);
-    }
-    if (!a.report.empty()) {
-        if (lower_extension(a.report) != ".json")
-            throw Error("cannot write the report '" + a.report + "': it must end in .json");
-        require_writable(a.report);
-    }
-}
-
-void write_text(const std::string& path, const std::string& text) {
-    io::AtomicFile file(path);
-    file.write(text);
-    file.commit();
-}
-
-WriteOptions write_options(const MeshArgs& a) {
-    WriteOptions o;
-    o.msh_encoding = a.msh_ascii ? MshEncoding::Ascii : MshEncoding::Binary;
-    o.inp_family = a.inp_family == "heat" ? InpFamily::HeatTransfer
-                   : a.inp_family == "coupled" ? InpFamily::Coupled
-                                               : InpFamily::Stress;
-    o.inp_pyramid = a.inp_pyramid == "c3d5" ? InpPyramid::C3D5 : InpPyramid::CollapsedHex;
-    if (o.inp_pyramid == InpPyramid::C3D5 && o.inp_family != InpFamily::Stress)
-        throw Error("--inp-pyramid c3d5 has no heat-transfer or coupled variant: use --inp-pyramid hex with --inp-family " +
-                    a.inp_family);
-    return o;
+    for (const std::string& out : a.outputs) run::check_mesh_output(out, until);
+    if (!a.report.empty()) run::check_report_output(a.report, ".json", "the report");
 }
 
 // All files or none: a failure removes what this run already wrote.
-void write_all(const HybridMesh& mesh, const std::vector<std::string>& outputs, const WriteOptions& options,
-               const std::string& report, const std::string& report_text) {
+void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions options) {
+    options.description = &meshed.result.description;
     std::vector<std::string> written;
     try {
-        for (const std::string& out : outputs) {
-            write_mesh(mesh, out, options);
+        for (const std::string& out : a.outputs) {
+            write_mesh(meshed.result.mesh, out, options);
             written.push_back(out);
         }
-        if (!report.empty()) write_text(report, report_text);
+        if (!a.report.empty()) run::write_text(a.report, run::run_json(meshed, a.outputs).dump(2) + "\n");
     } catch (...) {
         std::error_code ec;
         for (const std::string& w : written) fs::remove(w, ec);
@@ -135,24 +80,15 @@ void write_all(const HybridMesh& mesh, const std::vector<std::string>& outputs, 
     }
 }
 
-MeshOptions mesh_options(const MeshArgs& a, ProgressLine& progress) {
-    require_positive(a.size_option, a.size, "--size");
-    require_positive(a.sweep_option, a.sweep_size, "--sweep-size");
-    if (a.size_option->count() && a.sweep_option->count() && !(a.sweep_size < a.size))
-        throw Error(fmt::format("contradictory sizes: --sweep-size {} must be smaller than --size {}", a.sweep_size,
-                                a.size));
-    MeshOptions o;
-    o.size = a.size;
-    o.sweep_size = a.sweep_size;
-    o.circumferential = a.circumferential;
-    o.sweep.radial_layers = a.layers;
-    o.sweep.axial_aspect = a.axial_aspect;
-    o.pyramids.height_factor = a.pyramid_height;
-    o.tets.gradation = a.gradation;
-    o.tets.partitions = a.tet_parts;
-    o.tets.relaxation.iterations = a.tet_relax;
-    o.threads = a.threads;
-    o.max_elements = a.max_elements;
+MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
+    run::MeshSettings& s = a.settings;
+    take_if_given(s.size, a.size_option, a.size);
+    take_if_given(s.sweep_size, a.sweep_option, a.sweep_size);
+    take_if_given(s.circumferential, a.circ_option, a.circumferential);
+    take_if_given(s.threads, a.threads_option, a.threads);
+    take_if_given(s.max_elements, a.max_elements_option, a.max_elements);
+    take_if_given(s.solid, a.solid_option, a.solid);
+    MeshOptions o = run::mesh_options(s, run::Naming::Flags);
     o.progress = progress.callback();
     return o;
 }
@@ -161,6 +97,7 @@ MeshOptions mesh_options(const MeshArgs& a, ProgressLine& progress) {
 
 Command add_mesh_command(CLI::App& app) {
     auto args = std::make_shared<MeshArgs>();
+    const run::MeshSettings& d = args->settings;  // the defaults, shown in the help
     CLI::App* cmd = app.add_subcommand("mesh", "Mesh a CAD solid with tubular holes (hex rings, pyramids, tets)");
     cmd->add_option("IN", args->input,
                     "CAD file (.step .stp .iges .igs .brep); without it, the built-in dam block (paper-ex1)");
@@ -174,82 +111,87 @@ Command add_mesh_command(CLI::App& app) {
         "--sweep-size", args->sweep_size,
         "Hex ring thickness St (default: smallest tube diameter, cut by the paper's rules; a given St the rules "
         "would cut is an error)");
-    cmd->add_option("--circ", args->circumferential,
-                    "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 8)")
-        ->check(CLI::Range(3, 4096));
-    cmd->add_option("--layers", args->layers, "Hex layers across the ring, L (default 2, graded 1.5 towards the wall)")
-        ->check(CLI::Range(1, 64));
-    cmd->add_option("--axial-aspect", args->axial_aspect,
-                    fmt::format("Axial step of the hex rings over St (default {})", args->axial_aspect))
-        ->check(CLI::Range(0.25, 16.0));
-    cmd->add_option("--pyramid-height", args->pyramid_height,
+    args->circ_option =
+        cmd->add_option("--circ", args->circumferential,
+                        "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 8)")
+            ->check(in_range(run::kCircRange));
+    cmd->add_option("--layers", args->settings.layers,
+                    fmt::format("Hex layers across the ring, L (default {}, graded {} towards the wall)", d.layers,
+                                run::default_mesh_options().sweep.grading))
+        ->check(in_range(run::kLayersRange));
+    cmd->add_option("--axial-aspect", args->settings.axial_aspect,
+                    fmt::format("Axial step of the hex rings over St (default {})", d.axial_aspect))
+        ->check(in_range(run::kAxialAspectRange));
+    cmd->add_option("--pyramid-height", args->settings.pyramid_height,
                     fmt::format("Pyramid apex height over the quad's mean edge (default {}, the paper's)",
-                                args->pyramid_height))
-        ->check(CLI::Range(0.2, 3.0));
-    cmd->add_option("--gradation", args->gradation,
+                                d.pyramid_height))
+        ->check(in_range(run::kPyramidHeightRange));
+    cmd->add_option("--gradation", args->settings.gradation,
                     fmt::format("Largest growth of the tet size from one element to the next (default {})",
-                                args->gradation))
-        ->check(CLI::Range(1.0, 4.0));
-    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
-    cmd->add_option("--tet-parts", args->tet_parts,
+                                d.gradation))
+        ->check(in_range(run::kGradationRange));
+    args->threads_option = cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+                               ->check(in_range(run::kThreadsRange));
+    cmd->add_option("--tet-parts", args->settings.tet_parts,
                     fmt::format("Spatial parts of the tet step's parallel Delaunay passes (default {}: the mesh is "
                                 "the same for any --threads; 0: one per thread, the mesh then depends on it)",
-                                args->tet_parts))
-        ->check(CLI::Range(0, 4096));
-    cmd->add_option("--tet-relax", args->tet_relax,
+                                d.tet_parts))
+        ->check(in_range(run::kTetPartsRange));
+    cmd->add_option("--tet-relax", args->settings.tet_relax,
                     fmt::format("ODT relaxation rounds of the tet step's interior points before the optimisation "
                                 "(default {}; 0: none, mean collapse about 0.01 lower, time within about 15 % either way)",
-                                args->tet_relax))
-        ->check(CLI::Range(0, 16));
-    cmd->add_option("--max-elements", args->max_elements,
-                    "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "
-                    "volume, area, S, St and tube lengths; default: what this machine's memory holds)")
-        ->check(CLI::PositiveNumber);
+                                d.tet_relax))
+        ->check(in_range(run::kTetRelaxRange));
+    args->max_elements_option =
+        cmd->add_option("--max-elements", args->max_elements,
+                        "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "
+                        "volume, area, S, St and tube lengths; default: what this machine's memory holds)")
+            ->check(CLI::PositiveNumber);
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
-    cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
-        ->check(CLI::Range(1, 1 << 30));
-    std::string stages;
-    for (Stage s : kStages) stages += (stages.empty() ? "" : ", ") + std::string(stage_name(s));
-    cmd->add_option("--until", args->until_name, "Last stage to run: " + stages + " (default: the last)")
+    args->solid_option = cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
+                             ->check(in_range(run::kSolidRange));
+    cmd->add_option("--until", args->until_name, "Last stage to run: " + run::stage_names() + " (default: the last)")
         ->option_text("STAGE");
     cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
     cmd->add_flag("--msh-ascii", args->msh_ascii, "Write .msh files as text (default: binary)");
     cmd->add_option("--inp-family", args->inp_family,
                     "Element family of .inp files: stress (C3D4/C3D8, default; CalculiX uses them for heat transfer "
                     "too), heat (Abaqus DC3D4/DC3D8), coupled (C3D4T/C3D8T)")
-        ->check(CLI::IsMember({"stress", "heat", "coupled"}));
+        ->check(CLI::IsMember(run::kInpFamilies));
     cmd->add_option("--inp-pyramid", args->inp_pyramid,
                     "Pyramids in .inp files: hex (a C3D8 with the apex repeated, which CalculiX and Abaqus read; "
                     "default) or c3d5 (the 5-node pyramid, stress family only)")
-        ->check(CLI::IsMember({"hex", "c3d5"}));
+        ->check(CLI::IsMember(run::kInpPyramids));
     cmd->footer(
         "Progress: one updating line per phase on a terminal, plain 'progress:' lines otherwise.\n"
         "Partial stages (--until) are checked for what they hold (engine/pipeline/stage_check.hpp); .inp needs "
         "the sweep stage or the full mesh.\n"
         "Exit status: 0 meshed and written, 2 on any error (one line on stderr, no file written).");
 
-    return {cmd, [args, stages]() -> int {
-        const std::optional<Stage> until = stage_from_name(args->until_name);
-        if (!until) throw Error("--until " + args->until_name + ": no such stage (use " + stages + ")");
+    return {cmd, [args]() -> int {
+        const Stage until = run::stage_named(args->until_name, run::Naming::Flags);
+        args->settings.until = until;
         if (args->outputs.empty()) {
             if (!args->input.empty()) throw Error("mesh needs -o OUT.msh|.vtu|.inp for '" + args->input + "'");
             args->outputs = {"dam_block.msh", "dam_block.vtu"};
         }
-        check_outputs(*args, *until);
-        WriteOptions write = write_options(*args);
+        check_outputs(*args, until);
+        const WriteOptions write =
+            run::write_options(args->msh_ascii, args->inp_family, args->inp_pyramid, run::Naming::Flags);
         ProgressLine progress(ProgressLine::mode_for(args->quiet));
         const MeshOptions options = mesh_options(*args, progress);
         auto say = [&](const std::string& s) {
             if (!args->quiet) fmt::print("{}\n", s);
         };
 
-        geom::MeshRun run;
+        geom::MeshRun meshed;
         try {
             if (args->input.empty()) {
                 say("no input: meshing the built-in dam block (preset paper-ex1)");
-                run = geom::mesh_preset("paper-ex1", options, *until);
+                meshed = geom::mesh_preset("paper-ex1", options, until);
             } else {
-                run = geom::mesh_file(args->input, options, {.solid = args->solid, .until = *until});
+                meshed = geom::mesh_file(args->input, options,
+                                      {.solid = args->settings.solid.value_or(0), .until = until});
             }
         } catch (...) {
             progress.close();
@@ -257,27 +199,25 @@ Command add_mesh_command(CLI::App& app) {
         }
         progress.close();
 
-        const PipelineResult& r = run.result;
-        const std::string report_text = args->report.empty() ? "" : run_json(run, args->outputs).dump(2) + "\n";
-        write.description = &r.description;
-        write_all(r.mesh, args->outputs, write, args->report, report_text);
+        const PipelineResult& r = meshed.result;
+        write_all(meshed, *args, write);
         if (args->quiet) return 0;
 
-        say(fmt::format("{} ({}): {} tube{}, S = {:.6g}, St = {:.6g}", run.source, run.format, run.tubes,
-                        run.tubes == 1 ? "" : "s", run.size, run.sweep_size));
-        for (const std::string& line : run.model_lines) say("  " + line);
+        say(fmt::format("{} ({}): {} tube{}, S = {:.6g}, St = {:.6g}", meshed.source, meshed.format, meshed.tubes,
+                        meshed.tubes == 1 ? "" : "s", meshed.size, meshed.sweep_size));
+        for (const std::string& line : meshed.model_lines) say("  " + line);
         for (const std::string& w : r.warnings) fmt::print(stderr, "tubemesh: warning: {}\n", w);
         if (r.reached != kLastStage)
             say(fmt::format("note: stopped after the {} stage (--until)", stage_name(r.reached)));
         say("");
-        for (const std::string& line : phase_lines(run)) say(line);
+        for (const std::string& line : run::phase_lines(meshed)) say(line);
         const HybridMesh& mesh = r.mesh;
         say(fmt::format("\n{} nodes, {} hexahedra, {} pyramids, {} tetrahedra; {} boundary triangles, {} boundary quads",
                         mesh.point_count(), mesh.cell_count(CellKind::Hex), mesh.cell_count(CellKind::Pyramid),
                         mesh.cell_count(CellKind::Tet), mesh.face_count(FaceKind::Tri),
                         mesh.face_count(FaceKind::Quad)));
-        fmt::print("\n{}\n", run_table(run));
-        for (const std::string& line : group_lines(run)) say(line);
+        fmt::print("\n{}\n", run::run_table(meshed));
+        for (const std::string& line : run::group_lines(meshed)) say(line);
         for (const std::string& out : args->outputs) say("wrote " + out);
         if (!args->report.empty()) say("wrote " + args->report);
         return 0;

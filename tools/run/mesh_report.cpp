@@ -1,12 +1,12 @@
-#include "tools/cli/mesh_report.hpp"
+#include "tools/run/mesh_report.hpp"
 
 #include <fmt/format.h>
 
 #include "engine/io/mesh_notes.hpp"
 #include "engine/mesh/surface_groups.hpp"
-#include "tools/cli/quality_table.hpp"
+#include "tools/run/quality_table.hpp"
 
-namespace tubemesh::cli {
+namespace tubemesh::run {
 
 namespace {
 
@@ -68,13 +68,17 @@ std::vector<std::string> phase_lines(const geom::MeshRun& run) {
     return lines;
 }
 
-std::string run_table(const geom::MeshRun& run) {
-    const PipelineResult& r = run.result;
+KindTimes kind_times(const geom::MeshRun& run) {
     KindTimes times;
     times.tet = phase_seconds(run, "tets");
     times.pyramid = phase_seconds(run, "pyramids");
     times.hex = phase_seconds(run, "sweep");
-    return format_run_table(r.quality, r.mesh.point_count(), times, r.seconds);
+    return times;
+}
+
+std::string run_table(const geom::MeshRun& run) {
+    const PipelineResult& r = run.result;
+    return format_run_table(r.quality, r.mesh.point_count(), kind_times(run), r.seconds);
 }
 
 nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs) {
@@ -121,4 +125,4 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
             {"outputs", outputs}};
 }
 
-}  // namespace tubemesh::cli
+}  // namespace tubemesh::run

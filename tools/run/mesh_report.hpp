@@ -1,13 +1,15 @@
 #pragma once
-// The report of `tubemesh mesh`: the phase lines and Table 1 as text, and the same as JSON
-// (--report FILE). Both are built from geom::MeshRun only.
+// The report of a meshing run, for `tubemesh mesh` and the Python module alike: the phase lines
+// and Table 1 as text, and the same as JSON (--report FILE, `report` in Python). Both are built
+// from geom::MeshRun only.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "geom/mesh_file.hpp"
+#include "tools/run/quality_table.hpp"
 
-namespace tubemesh::cli {
+namespace tubemesh::run {
 
 // "sweep      0.043 s  1 tubes, 8952 nodes, ...; min J_m 0.9239, max cond 2.387", one per phase.
 std::vector<std::string> phase_lines(const geom::MeshRun& run);
@@ -20,4 +22,4 @@ std::vector<std::string> group_lines(const geom::MeshRun& run);
 // warnings, outputs.
 nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs);
 
-}  // namespace tubemesh::cli
+}  // namespace tubemesh::run

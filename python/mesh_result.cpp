@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "engine/io/mesh_io.hpp"
+#include "tools/run/html_report.hpp"
 #include "tools/run/mesh_report.hpp"
 #include "tools/run/outputs.hpp"
 #include "tools/run/quality_measures.hpp"
@@ -175,6 +176,11 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
                 write_text(self, path, ".json", "the report", report_text);
             },
             py::arg("path"), "Writes the report as JSON (as `tubemesh mesh --report`)")
+        .def(
+            "write_html", [](py::object self, py::object path) {
+                write_text(self, path, ".html", "the HTML report", run::html_report);
+            },
+            py::arg("path"), "Writes the report as one self-contained HTML page (as `tubemesh mesh --html`)")
         .def("__repr__", [](py::object self) {
             const HybridMesh& m = mesh_of(self);
             return "<tubemesh.Mesh " + result_of(self).run.source + ": " + std::to_string(m.point_count()) +

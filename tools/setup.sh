@@ -8,8 +8,8 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libocct-data-exchange-dev libtbb-dev libeigen3-dev libnanoflann-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev
-  # the Python module
-  pybind11-dev python3-dev
+  # the Python module and the HTML report (three.js and Chart.js are inlined at build time)
+  pybind11-dev python3-dev libjs-three libjs-chart.js
   # tests
   libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
   python3 python3-gmsh python3-meshio python3-numpy python3-vtk9 calculix-ccx python3-pytest

@@ -123,6 +123,11 @@ TEST_F(CliMeshErrors, ReportMustBeJson) {
     EXPECT_FALSE(fs::exists(dir / "out.msh"));
 }
 
+TEST_F(CliMeshErrors, HtmlReportMustBeHtml) {
+    expect_error(q(pipe()), "--html " + q(dir / "report.htm"), "it must end in .html");
+    EXPECT_FALSE(fs::exists(dir / "report.htm"));
+}
+
 TEST_F(CliMeshErrors, InputWithoutOutput) {
     const auto r = run_command(cli() + " mesh " + q(pipe()));
     EXPECT_EQ(r.exit_code, 2);

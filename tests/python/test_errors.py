@@ -44,8 +44,8 @@ def test_write_and_check_errors(crankshaft, tmp_path):
         crankshaft.write(tmp_path / "m.txt")
     with pytest.raises(tubemesh.Error, match="does not exist"):
         crankshaft.write(tmp_path / "no" / "m.msh")
-    with pytest.raises(tubemesh.Error, match="must end in .json"):
-        crankshaft.write_report(tmp_path / "r.txt")
+    with pytest.raises(tubemesh.Error, match="must end in .html"):
+        crankshaft.write_html(tmp_path / "r.htm")
     with pytest.raises(tubemesh.Error):
         tubemesh.check(tmp_path / "missing.msh")
     with pytest.raises(tubemesh.Error):

@@ -1,11 +1,11 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--tet-relax R] [--max-elements N] [--report FILE.json] [--quiet] [--solid K] [--until STAGE]
-// [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a CAD solid
-// (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file, show
-// progress, print the phases, Table 1 and where each surface group is, and write the mesh to
-// every OUT (format by extension: .msh, .vtu, .vtm, .inp) and the report as JSON. The options
-// and their defaults are run::MeshSettings, shared with the Python module.
+// [--tet-relax R] [--max-elements N] [--report FILE.json] [--html FILE.html] [--quiet] [--solid K]
+// [--until STAGE] [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
+// CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
+// show progress, print the phases, Table 1 and where each surface group is, and write the mesh
+// to every OUT (format by extension: .msh, .vtu, .vtm, .inp), the report as JSON and as an HTML
+// page. The options and their defaults are run::MeshSettings, shared with the Python module.
 //
 // Safety: arguments, output formats and output folders are checked before any work; the mesh
 // passes the stage's check (engine/pipeline/stage_check.hpp) before any file is written; each
@@ -23,6 +23,7 @@
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/progress_line.hpp"
+#include "tools/run/html_report.hpp"
 #include "tools/run/mesh_report.hpp"
 #include "tools/run/mesh_settings.hpp"
 #include "tools/run/outputs.hpp"
@@ -42,6 +43,7 @@ struct MeshArgs {
     double size = 0, sweep_size = 0, max_elements = 0;
     int circumferential = 0, threads = 0, solid = 0;
     std::string report;
+    std::string html;
     std::string until_name = stage_name(kLastStage);
     bool quiet = false;
     bool msh_ascii = false;
@@ -61,6 +63,7 @@ CLI::Validator in_range(run::Range r) { return CLI::Range(r.lo, r.hi); }
 void check_outputs(const MeshArgs& a, Stage until) {
     for (const std::string& out : a.outputs) run::check_mesh_output(out, until);
     if (!a.report.empty()) run::check_report_output(a.report, ".json", "the report");
+    if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
 }
 
 // All files or none: a failure removes what this run already wrote.
@@ -72,7 +75,11 @@ void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions opti
             write_mesh(meshed.result.mesh, out, options);
             written.push_back(out);
         }
-        if (!a.report.empty()) run::write_text(a.report, run::run_json(meshed, a.outputs).dump(2) + "\n");
+        if (!a.report.empty()) {
+            run::write_text(a.report, run::run_json(meshed, a.outputs).dump(2) + "\n");
+            written.push_back(a.report);
+        }
+        if (!a.html.empty()) run::write_text(a.html, run::html_report(meshed));
     } catch (...) {
         std::error_code ec;
         for (const std::string& w : written) fs::remove(w, ec);
@@ -148,6 +155,9 @@ Command add_mesh_command(CLI::App& app) {
                         "volume, area, S, St and tube lengths; default: what this machine's memory holds)")
             ->check(CLI::PositiveNumber);
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
+    cmd->add_option("--html", args->html,
+                    "Also write the report as one self-contained HTML page (Table 1, histograms, phase times, a 3D "
+                    "view of the hybrid layer around the pipes)");
     args->solid_option = cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
                              ->check(in_range(run::kSolidRange));
     cmd->add_option("--until", args->until_name, "Last stage to run: " + run::stage_names() + " (default: the last)")
@@ -220,6 +230,7 @@ Command add_mesh_command(CLI::App& app) {
         for (const std::string& line : run::group_lines(meshed)) say(line);
         for (const std::string& out : args->outputs) say("wrote " + out);
         if (!args->report.empty()) say("wrote " + args->report);
+        if (!args->html.empty()) say("wrote " + args->html);
         return 0;
     }};
 }

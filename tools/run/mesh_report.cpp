@@ -81,6 +81,13 @@ std::string run_table(const geom::MeshRun& run) {
     return format_run_table(r.quality, r.mesh.point_count(), kind_times(run), r.seconds);
 }
 
+std::vector<TableRow> run_table_rows(const geom::MeshRun& run) {
+    const PipelineResult& r = run.result;
+    std::vector<TableRow> rows = table_rows(r.quality, r.mesh.point_count(), kind_times(run));
+    for (TableRow& row : total_rows(r.quality, r.seconds)) rows.push_back(std::move(row));
+    return rows;
+}
+
 nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs) {
     const PipelineResult& r = run.result;
     const HybridMesh& m = r.mesh;

@@ -18,6 +18,8 @@ std::string run_table(const geom::MeshRun& run);
 // The length unit and where each surface group is (alias, CAD kind, area, centroid, normal),
 // then the named node sets: what every mesh file's comment block says too.
 std::vector<std::string> group_lines(const geom::MeshRun& run);
+// The same table's rows with the totals (quality_table.hpp), for other renderings.
+std::vector<TableRow> run_table_rows(const geom::MeshRun& run);
 // Everything above as one object: source, stage, sizes, counts, phases, quality, check,
 // warnings, outputs.
 nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs);

@@ -1,0 +1,16 @@
+#pragma once
+// The files the HTML report inlines, embedded in the program at build time: three.js and its
+// OrbitControls (Debian's libjs-three) and Chart.js (libjs-chart.js), so a report opens
+// without network, and the page's own script, style and body (tools/run/html/).
+#include <string_view>
+
+namespace tubemesh::run {
+
+struct HtmlAssets {
+    std::string_view three_js, orbit_controls_js, chart_js;
+    std::string_view page_js, page_css, page_body;
+};
+
+const HtmlAssets& html_assets();
+
+}  // namespace tubemesh::run

@@ -13,6 +13,8 @@ packages=(
   # tests
   libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
   python3 python3-gmsh python3-meshio python3-numpy python3-vtk9 calculix-ccx python3-pytest
+  # the HTML report in a browser: headless Chromium, screenshots read with Pillow
+  chromium python3-pil
   # benchmark peers
   gmsh tetgen valgrind time
 )

@@ -29,6 +29,14 @@ nlohmann::json pairs_json(const std::vector<std::pair<std::string, double>>& pai
     return o;
 }
 
+KindTimes kind_times(const geom::MeshRun& run) {
+    KindTimes times;
+    times.tet = phase_seconds(run, "tets");
+    times.pyramid = phase_seconds(run, "pyramids");
+    times.hex = phase_seconds(run, "sweep");
+    return times;
+}
+
 nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 // Per surface group: where it is (alias, CAD kind, measured area, centroid, normal if flat).
@@ -66,14 +74,6 @@ std::vector<std::string> phase_lines(const geom::MeshRun& run) {
         lines.push_back(fmt::format("{:<10} {:8.3f} s  {}", p.name, p.seconds, text));
     }
     return lines;
-}
-
-KindTimes kind_times(const geom::MeshRun& run) {
-    KindTimes times;
-    times.tet = phase_seconds(run, "tets");
-    times.pyramid = phase_seconds(run, "pyramids");
-    times.hex = phase_seconds(run, "sweep");
-    return times;
 }
 
 std::string run_table(const geom::MeshRun& run) {

@@ -8,26 +8,26 @@ namespace tubemesh::run {
 
 namespace {
 
-std::string name_of(const char* keyword, Naming naming) {
+void require_positive(const std::optional<double>& value, const char* keyword, Naming naming) {
+    if (value && !(*value > 0 && std::isfinite(*value)))
+        throw Error(fmt::format("{} must be a positive number, got {}", option_name(keyword, naming), *value));
+}
+
+void require_in(double value, Range range, const char* keyword, Naming naming) {
+    if (!(value >= range.lo && value <= range.hi))
+        throw Error(fmt::format("{} must be between {} and {}, got {}", option_name(keyword, naming), range.lo, range.hi,
+                                value));
+}
+
+}  // namespace
+
+std::string option_name(const char* keyword, Naming naming) {
     if (naming == Naming::Keywords) return keyword;
     std::string flag = std::string("--") + keyword;
     for (char& c : flag)
         if (c == '_') c = '-';
     return flag;
 }
-
-void require_positive(const std::optional<double>& value, const char* keyword, Naming naming) {
-    if (value && !(*value > 0 && std::isfinite(*value)))
-        throw Error(fmt::format("{} must be a positive number, got {}", name_of(keyword, naming), *value));
-}
-
-void require_in(double value, Range range, const char* keyword, Naming naming) {
-    if (!(value >= range.lo && value <= range.hi))
-        throw Error(fmt::format("{} must be between {} and {}, got {}", name_of(keyword, naming), range.lo, range.hi,
-                                value));
-}
-
-}  // namespace
 
 const MeshOptions& default_mesh_options() {
     static const MeshOptions defaults;
@@ -38,8 +38,8 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     require_positive(s.size, "size", naming);
     require_positive(s.sweep_size, "sweep_size", naming);
     if (s.size && s.sweep_size && !(*s.sweep_size < *s.size))
-        throw Error(fmt::format("contradictory sizes: {} {} must be smaller than {} {}", name_of("sweep_size", naming),
-                                *s.sweep_size, name_of("size", naming), *s.size));
+        throw Error(fmt::format("contradictory sizes: {} {} must be smaller than {} {}", option_name("sweep_size", naming),
+                                *s.sweep_size, option_name("size", naming), *s.size));
     if (s.circumferential) require_in(*s.circumferential, kCircRange, "circ", naming);
     require_in(s.layers, kLayersRange, "layers", naming);
     require_in(s.axial_aspect, kAxialAspectRange, "axial_aspect", naming);
@@ -74,7 +74,7 @@ std::string stage_names() {
 
 Stage stage_named(const std::string& name, Naming naming) {
     const std::optional<Stage> stage = stage_from_name(name);
-    if (!stage) throw Error(name_of("until", naming) + " " + name + ": no such stage (use " + stage_names() + ")");
+    if (!stage) throw Error(option_name("until", naming) + " " + name + ": no such stage (use " + stage_names() + ")");
     return *stage;
 }
 

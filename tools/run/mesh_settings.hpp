@@ -46,6 +46,8 @@ inline constexpr Range kSolidRange{1, 1 << 30};
 
 // How errors name an option: "--size" on the command line, "size" in Python.
 enum class Naming { Flags, Keywords };
+// "sweep_size" as the user wrote it: "--sweep-size" or "sweep_size".
+std::string option_name(const char* keyword, Naming naming);
 
 // The settings as MeshOptions (without a progress callback). Throws tubemesh::Error, one line
 // naming the option, for a value out of its range, a size that is not a positive number, or

@@ -40,24 +40,22 @@ void check_mesh_output(const std::string& path, Stage stage) {
 
 WriteOptions write_options(bool msh_ascii, const std::string& inp_family, const std::string& inp_pyramid,
                            Naming naming) {
-    const bool flags = naming == Naming::Flags;
-    auto check_member = [&](const std::string& value, const std::vector<std::string>& names, const char* flag,
-                            const char* keyword) {
+    const std::string family = option_name("inp_family", naming), pyramid = option_name("inp_pyramid", naming);
+    auto check_member = [&](const std::string& value, const std::vector<std::string>& names, const std::string& name) {
         for (const std::string& n : names)
             if (n == value) return;
         std::string list;
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-        throw Error(std::string(flags ? flag : keyword) + " " + value + ": not one of " + list);
+        throw Error(name + " " + value + ": not one of " + list);
     };
-    check_member(inp_family, kInpFamilies, "--inp-family", "inp_family");
-    check_member(inp_pyramid, kInpPyramids, "--inp-pyramid", "inp_pyramid");
+    check_member(inp_family, kInpFamilies, family);
+    check_member(inp_pyramid, kInpPyramids, pyramid);
     WriteOptions o;
     o.msh_encoding = msh_ascii ? MshEncoding::Ascii : MshEncoding::Binary;
     o.inp_family = inp_family == "heat"      ? InpFamily::HeatTransfer
                    : inp_family == "coupled" ? InpFamily::Coupled
                                              : InpFamily::Stress;
     o.inp_pyramid = inp_pyramid == "c3d5" ? InpPyramid::C3D5 : InpPyramid::CollapsedHex;
-    const std::string pyramid = flags ? "--inp-pyramid" : "inp_pyramid", family = flags ? "--inp-family" : "inp_family";
     if (o.inp_pyramid == InpPyramid::C3D5 && o.inp_family != InpFamily::Stress)
         throw Error(pyramid + " c3d5 has no heat-transfer or coupled variant: use " + pyramid + " hex with " + family +
                     " " + inp_family);

@@ -78,10 +78,14 @@ MeshRun mesh_model(const Model& model, const MeshOptions& options, Stage until) 
 }
 
 MeshRun mesh_preset(const std::string& preset, const MeshOptions& options, Stage until) {
+    return mesh_spec(preset_spec(preset), options, until);
+}
+
+MeshRun mesh_spec(const BlockSpec& spec, const MeshOptions& options, Stage until) {
     const auto limit = limit_threads(options);
     const auto t0 = Clock::now();
     PhaseProgress progress(options.progress, "build", 1);
-    const BuiltBlock block = build_block(preset_spec(preset));
+    const BuiltBlock block = build_block(spec);
     progress.finish();
     return mesh_loaded(block.model, options, until, model_phase("build", seconds_since(t0), block.model));
 }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "engine/pipeline/pipeline.hpp"
+#include "geom/builders/block_spec.hpp"
 #include "geom/model.hpp"
 
 namespace tubemesh::geom {
@@ -52,5 +53,8 @@ MeshRun mesh_model(const Model& model, const MeshOptions& options = {}, Stage un
 // A built-in block by preset name (geom/builders/presets.hpp; "paper-ex1" is the dam block);
 // the build is the first phase, "build".
 MeshRun mesh_preset(const std::string& preset, const MeshOptions& options = {}, Stage until = kLastStage);
+
+// A block described by a spec (geom/builders/block_spec.hpp), built first ("build" phase).
+MeshRun mesh_spec(const BlockSpec& spec, const MeshOptions& options = {}, Stage until = kLastStage);
 
 }  // namespace tubemesh::geom

@@ -10,6 +10,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev
   # the Python module and the HTML report (three.js and Chart.js are inlined at build time)
   pybind11-dev python3-dev libjs-three libjs-chart.js
+  # batch: catalogue, hashes, the MPI driver (built only when MPI is found)
+  libsqlite3-dev libssl-dev libopenmpi-dev openmpi-bin
   # tests
   libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
   python3 python3-gmsh python3-meshio python3-numpy python3-vtk9 calculix-ccx python3-pytest

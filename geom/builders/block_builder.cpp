@@ -166,7 +166,6 @@ void check_clearances(const BlockSpec& spec, const std::vector<CentreLine>& line
 }  // namespace
 
 BuiltBlock build_block(const BlockSpec& spec) {
-    if (spec.pipes.empty()) throw Error("the block has no pipes: give it at least one");
     try {
         const TopoDS_Solid host = make_host(spec.host);
 
@@ -196,17 +195,21 @@ BuiltBlock build_block(const BlockSpec& spec) {
         arguments.Append(host);
         tools.Append(pipes);
 
-        BRepAlgoAPI_Cut cut;
-        cut.SetArguments(arguments);
-        cut.SetTools(tools);
-        cut.SetUseOBB(Standard_True);  // oriented boxes: fewer false overlaps between curved pipes and faces
-        cut.Build();
-        if (!cut.IsDone() || cut.HasErrors())
-            throw Error("cutting the pipes from the block failed in OpenCASCADE's boolean: check that the pipes do not "
-                        "touch each other or the block's edges");
-
         std::vector<TopoDS_Solid> solids;
-        for (TopExp_Explorer it(cut.Shape(), TopAbs_SOLID); it.More(); it.Next()) solids.push_back(TopoDS::Solid(it.Current()));
+        if (spec.pipes.empty()) {
+            solids.push_back(host);
+        } else {
+            BRepAlgoAPI_Cut cut;
+            cut.SetArguments(arguments);
+            cut.SetTools(tools);
+            cut.SetUseOBB(Standard_True);  // oriented boxes: fewer false overlaps between curved pipes and faces
+            cut.Build();
+            if (!cut.IsDone() || cut.HasErrors())
+                throw Error("cutting the pipes from the block failed in OpenCASCADE's boolean: check that the pipes do "
+                            "not touch each other or the block's edges");
+            for (TopExp_Explorer it(cut.Shape(), TopAbs_SOLID); it.More(); it.Next())
+                solids.push_back(TopoDS::Solid(it.Current()));
+        }
         if (solids.size() != 1)
             throw Error("cutting the pipes split the block into " + std::to_string(solids.size()) +
                         " pieces: a pipe cuts the block in two");

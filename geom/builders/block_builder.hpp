@@ -11,7 +11,7 @@ struct BuiltBlock {
 };
 
 // Sweeps every pipe, cuts them all from the host in one boolean, and checks the result: one
-// valid solid whose faces are the host's plus one wall per pipe. Throws tubemesh::Error, naming
+// valid solid whose faces are the host's plus one wall per pipe. Without pipes: the host. Throws tubemesh::Error, naming
 // the pipe, when a path is malformed, does not leave the host at both ends, leaves and re-enters
 // it, bends tighter than its radius, or comes too close to another pipe or itself.
 BuiltBlock build_block(const BlockSpec& spec);

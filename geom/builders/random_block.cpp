@@ -3,29 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "engine/core/types.hpp"
 #include "geom/builders/centre_line.hpp"
 #include "geom/builders/clearance.hpp"
 #include "geom/builders/host_geometry.hpp"
+#include "geom/builders/random.hpp"
 
 namespace tubemesh::geom {
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// std::uniform_real_distribution may differ between standard libraries; this does not.
-class Random {
-public:
-    explicit Random(std::uint64_t seed) : engine_(seed) {}
-    double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-    int integer(int lo, int hi) { return lo + static_cast<int>(engine_() % static_cast<std::uint64_t>(hi - lo + 1)); }
-
-private:
-    std::mt19937_64 engine_;
-};
 
 double round_to(double v, double step) { return std::round(v / step) * step; }
 

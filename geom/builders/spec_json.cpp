@@ -136,8 +136,8 @@ BlockSpec parse_block_spec(const std::string& input, const std::string& source) 
         spec.host.diameter = number(c["diameter"], "cylinder.diameter", ctx);
         spec.host.length = number(c["length"], "cylinder.length", ctx);
     }
-    if (!j.contains("pipes") || !j["pipes"].is_array() || j["pipes"].empty())
-        ctx.fail("pipes", "expected a non-empty list of pipes");
+    if (!j.contains("pipes") || !j["pipes"].is_array())
+        ctx.fail("pipes", "expected a list of pipes ([] for a block without any)");
     for (std::size_t i = 0; i < j["pipes"].size(); ++i)
         spec.pipes.push_back(pipe_from(j["pipes"][i], "pipes[" + std::to_string(i) + "]", ctx));
     return spec;

@@ -15,10 +15,11 @@
 //   }
 //
 // "path" is one of line, arc (start, a point on the arc, end), polyline (corners rounded with
-// bend_radius), spline (through the points) or bspline (control points). Instead of "box" and
-// "pipes", {"serpentine": {"size": [20, 15, 3], "diameter": 0.032, "spacing": 1.5,
-// "bend_radius": 0.75, "end_margin": 1, "inlet": "x-", "outlet": "x-"}} describes a dam lift
-// (every field optional, defaults as shown). Unknown keys are errors, so typos do not pass.
+// bend_radius), spline (through the points) or bspline (control points); "pipes": [] is a block
+// without pipes. Instead of "box" and "pipes", {"serpentine": {"size": [20, 15, 3], "diameter":
+// 0.032, "spacing": 1.5, "bend_radius": 0.75, "end_margin": 1, "inlet": "x-", "outlet": "x-"}}
+// describes a dam lift (every field optional, defaults as shown). Unknown keys are errors, so
+// typos do not pass.
 #include <filesystem>
 #include <string>
 

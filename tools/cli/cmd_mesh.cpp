@@ -13,7 +13,6 @@
 // of this run are removed. Any error: one line on stderr, exit 2, no output file.
 #include <fmt/format.h>
 
-#include <filesystem>
 #include <optional>
 #include <memory>
 #include <string>
@@ -31,8 +30,6 @@
 namespace tubemesh::cli {
 
 namespace {
-
-namespace fs = std::filesystem;
 
 // The flags bind to plain values; those that are automatic when absent become settings only
 // when given (run::MeshSettings holds the defaults of the rest).
@@ -69,22 +66,10 @@ void check_outputs(const MeshArgs& a, Stage until) {
 // All files or none: a failure removes what this run already wrote.
 void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions options) {
     options.description = &meshed.result.description;
-    std::vector<std::string> written;
-    try {
-        for (const std::string& out : a.outputs) {
-            write_mesh(meshed.result.mesh, out, options);
-            written.push_back(out);
-        }
-        if (!a.report.empty()) {
-            run::write_text(a.report, run::run_json(meshed, a.outputs).dump(2) + "\n");
-            written.push_back(a.report);
-        }
-        if (!a.html.empty()) run::write_text(a.html, run::html_report(meshed));
-    } catch (...) {
-        std::error_code ec;
-        for (const std::string& w : written) fs::remove(w, ec);
-        throw;
-    }
+    std::vector<std::pair<std::string, std::string>> texts;
+    if (!a.report.empty()) texts.emplace_back(a.report, run::run_json(meshed, a.outputs).dump(2) + "\n");
+    if (!a.html.empty()) texts.emplace_back(a.html, run::html_report(meshed));
+    run::write_all(meshed.result.mesh, a.outputs, options, texts);
 }
 
 MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {

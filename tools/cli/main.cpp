@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
         cli::add_inspect_command(app),
         cli::add_make_block_command(app),
         cli::add_mesh_command(app),
+        cli::add_make_dam_command(app),
+        cli::add_batch_command(app),
+        cli::add_batch_worker_command(app),
     };
 
     try {

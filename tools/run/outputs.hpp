@@ -2,6 +2,7 @@
 // Where a run's files go: checks made before any work (so a bad path fails in a second, not
 // after the mesh) and the atomic write of a text file. Shared by `tubemesh mesh` and Python.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/io/mesh_io.hpp"
@@ -36,5 +37,10 @@ void check_report_output(const std::string& path, const char* extension, const c
 
 // Written to a temporary name and renamed (engine/io/atomic_file.hpp).
 void write_text(const std::string& path, const std::string& text);
+
+// A run's files, all or none: the mesh to every path in `meshes`, then each text to its path.
+// A failure removes the files this call already wrote and throws on.
+void write_all(const HybridMesh& mesh, const std::vector<std::string>& meshes, const WriteOptions& options,
+               const std::vector<std::pair<std::string, std::string>>& texts);
 
 }  // namespace tubemesh::run

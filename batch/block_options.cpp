@@ -1,0 +1,126 @@
+#include "batch/block_options.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+
+#include "batch/sha256.hpp"
+#include "engine/core/types.hpp"
+#include "tools/run/mesh_settings.hpp"
+
+namespace tubemesh::batch {
+
+namespace {
+
+struct Key {
+    const char* name;
+    bool whole;  // a whole number
+};
+constexpr Key kNumbers[] = {{"size", false},      {"sweep_size", false},     {"circ", true},
+                            {"layers", true},     {"axial_aspect", false},   {"pyramid_height", false},
+                            {"gradation", false}, {"tet_parts", true},       {"tet_relax", true},
+                            {"max_elements", false}, {"solid", true},        {"time_limit", false}};
+
+void check_formats(const nlohmann::json& v, const std::string& where) {
+    if (!v.is_array() || v.empty()) throw Error(where + ": \"formats\" must be a non-empty list such as [\"msh\"]");
+    for (const nlohmann::json& f : v)
+        if (!f.is_string() || (f != "msh" && f != "vtu" && f != "inp"))
+            throw Error(where + ": \"formats\" takes \"msh\", \"vtu\" and \"inp\", got " + f.dump());
+}
+
+// Types here; ranges by run::mesh_options once the block's options are complete.
+void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
+    if (key == "formats") return check_formats(v, where);
+    for (const Key& k : kNumbers) {
+        if (key != k.name) continue;
+        const bool automatic = v.is_null() && key != "time_limit";
+        if (!automatic && !(v.is_number() && std::isfinite(v.get<double>())))
+            throw Error(fmt::format("{}: \"{}\" must be a number{}, got {}", where, key,
+                                    key == "time_limit" ? "" : " or null (automatic)", v.dump()));
+        if (!automatic && k.whole && v.get<double>() != std::floor(v.get<double>()))
+            throw Error(fmt::format("{}: \"{}\" must be a whole number, got {}", where, key, v.dump()));
+        if (key == "time_limit" && v.get<double>() < 0)
+            throw Error(fmt::format("{}: \"time_limit\" must be at least 0 (0: none), got {}", where, v.dump()));
+        return;
+    }
+    throw Error(where + ": unknown option \"" + key + "\"");
+}
+
+template <class T>
+std::optional<T> optional_of(const nlohmann::json& o, const char* key) {
+    if (o.at(key).is_null()) return std::nullopt;
+    return o.at(key).get<T>();
+}
+
+run::MeshSettings settings_of(const nlohmann::json& o) {
+    run::MeshSettings s;
+    s.size = optional_of<double>(o, "size");
+    s.sweep_size = optional_of<double>(o, "sweep_size");
+    s.circumferential = optional_of<int>(o, "circ");
+    s.layers = o.at("layers").get<int>();
+    s.axial_aspect = o.at("axial_aspect").get<double>();
+    s.pyramid_height = o.at("pyramid_height").get<double>();
+    s.gradation = o.at("gradation").get<double>();
+    s.tet_parts = o.at("tet_parts").get<int>();
+    s.tet_relax = o.at("tet_relax").get<int>();
+    s.max_elements = optional_of<double>(o, "max_elements");
+    s.solid = optional_of<int>(o, "solid");
+    return s;
+}
+
+}  // namespace
+
+nlohmann::json default_block_options() {
+    const run::MeshSettings d;
+    return {{"size", nullptr},
+            {"sweep_size", nullptr},
+            {"circ", nullptr},
+            {"layers", d.layers},
+            {"axial_aspect", d.axial_aspect},
+            {"pyramid_height", d.pyramid_height},
+            {"gradation", d.gradation},
+            {"tet_parts", d.tet_parts},
+            {"tet_relax", d.tet_relax},
+            {"max_elements", nullptr},
+            {"solid", nullptr},
+            {"formats", {"msh"}},
+            {"time_limit", 3600.0}};
+}
+
+nlohmann::json merge_block_options(const nlohmann::json& base, const nlohmann::json& overrides,
+                                   const std::string& where) {
+    if (overrides.is_null()) return base;
+    if (!overrides.is_object()) throw Error(where + ": options must be an object");
+    nlohmann::json out = base;
+    for (const auto& [key, value] : overrides.items()) {
+        check_value(key, value, where);
+        out[key] = value;
+    }
+    try {
+        run::mesh_options(settings_of(out), run::Naming::Keywords);
+    } catch (const Error& e) {
+        throw Error(where + ": " + e.what());
+    }
+    return out;
+}
+
+std::string options_hash(const nlohmann::json& options) {
+    nlohmann::json keyed = options;
+    keyed.erase("time_limit");
+    // Numbers as doubles, so 1 and 1.0 hash alike.
+    for (auto& [key, value] : keyed.items())
+        if (value.is_number()) value = value.get<double>();
+    keyed["tubemesh"] = TUBEMESH_VERSION;
+    return sha256_hex(keyed.dump());
+}
+
+MeshOptions mesh_options(const nlohmann::json& o, int threads) {
+    run::MeshSettings s = settings_of(o);
+    s.threads = threads;
+    return run::mesh_options(s, run::Naming::Keywords);
+}
+
+int solid_of(const nlohmann::json& o) { return o.at("solid").is_null() ? 0 : o.at("solid").get<int>(); }
+
+}  // namespace tubemesh::batch

@@ -1,0 +1,230 @@
+// `tubemesh make-dam` and `tubemesh batch` end to end on a small dam (2 x 2 blocks of about
+// 14,000 elements): every block meshed, checked and reopened by Gmsh; the same bytes for any
+// thread count, after kill -9 at five moments and a resume, as shards merged; changed blocks
+// redone and unchanged ones kept; a corrupt, crashing or hanging block failing alone.
+// Faults come from TUBEMESH_BATCH_TEST_FAULT (batch/test_hooks.hpp): no test sleeps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/cli/batch_runs.hpp"
+#include "tests/support/outside_readers.hpp"
+
+namespace tubemesh::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+TEST(CliMakeDam, SameSeedSameDamAndEveryBlockHasItsRole) {
+    TempDir tmp;
+    const std::string args = " --columns 3 --lifts 2 --specs " + kSmallDam;
+    ASSERT_EQ(run_command(cli() + " make-dam --seed 7 -o " + q(tmp / "a") + args).exit_code, 0);
+    ASSERT_EQ(run_command(cli() + " make-dam --seed 7 -o " + q(tmp / "b") + args).exit_code, 0);
+    ASSERT_EQ(run_command(cli() + " make-dam --seed 8 -o " + q(tmp / "c") + args).exit_code, 0);
+    EXPECT_EQ(read_text(tmp / "a" / "manifest.json"), read_text(tmp / "b" / "manifest.json"));
+    EXPECT_EQ(read_text(tmp / "a" / "c2-l1.json"), read_text(tmp / "b" / "c2-l1.json"));
+    EXPECT_NE(read_text(tmp / "a" / "c2-l1.json"), read_text(tmp / "c" / "c2-l1.json"));
+
+    const json m = json::parse(read_text(tmp / "a" / "manifest.json"));
+    ASSERT_EQ(m["blocks"].size(), 6u);
+    std::map<std::string, std::string> roles;
+    for (const json& b : m["blocks"]) roles[b["id"]] = b["info"]["role"];
+    EXPECT_EQ(roles["c1-l1"], "foundation");
+    EXPECT_EQ(roles["c3-l2"], "crest");
+    EXPECT_EQ(roles["c2-l1"], "lift");
+    // Lifts stack: the second lift starts where the first ends.
+    const json& l1 = m["blocks"][0]["info"];
+    const json& l2 = m["blocks"][1]["info"];
+    EXPECT_DOUBLE_EQ(l2["origin"][2].get<double>(), l1["origin"][2].get<double>() + l1["size"][2].get<double>());
+}
+
+TEST(CliBatch, MeshesEveryBlockAndEveryMeshPassesTheCheckAndOpensInGmsh) {
+    const SmallDam dam;
+    const ProcessResult r = run_command(cli() + " batch " + q(dam.manifest()) + " -o " + q(dam.dir / "out"));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const std::vector<Row> rows = catalogue_rows(dam.dir / "out");
+    ASSERT_EQ(rows.size(), 4u);
+    for (const Row& row : rows) {
+        EXPECT_EQ(row.at("status"), "done") << row.at("error");
+        const fs::path msh = dam.dir / "out" / (row.at("id") + ".msh");
+        const ProcessResult check = run_command(cli() + " check --json " + q(msh));
+        ASSERT_EQ(check.exit_code, 0) << check.out;
+        const json c = json::parse(check.out);
+        EXPECT_EQ(std::to_string(c["tets"].get<long>()), row.at("tets"));
+        EXPECT_EQ(std::to_string(c["hexes"].get<long>()), row.at("hexes"));
+        const json seen = run_script("gmsh_summary.py", {msh.string()});
+        EXPECT_EQ(seen["elements"].value("4", 0), std::stol(row.at("tets")));
+        EXPECT_EQ(seen["elements"].value("5", 0), std::stol(row.at("hexes")));
+        EXPECT_EQ(seen["elements"].value("7", 0), std::stol(row.at("pyramids")));
+        // The report says the same, and the output's hash is the file's.
+        const json report = json::parse(read_text(dam.dir / "out" / row.at("report")));
+        EXPECT_EQ(std::to_string(report["tets"].get<long>()), row.at("tets"));
+        EXPECT_EQ(row.at("outputs"), row.at("id") + ".msh=" + sha256_of(msh));
+    }
+    // Two foundation/crest blocks without pipes, two lifts with one.
+    EXPECT_EQ(rows[0].at("hexes"), "0");
+    EXPECT_NE(rows[1].at("hexes"), "0");
+
+    const ProcessResult status = run_command(cli() + " batch --status " + q(dam.dir / "out"));
+    EXPECT_EQ(status.exit_code, 0);
+    EXPECT_NE(status.out.find("4 blocks: 4 done, 0 failed, 0 pending"), std::string::npos) << status.out;
+    EXPECT_NE(status.out.find("worst tet collapse"), std::string::npos);
+}
+
+TEST(CliBatch, OneOrTwoThreadsWriteTheSameBytes) {
+    const SmallDam dam;
+    EXPECT_EQ(batch(dam, "one", "--threads 1").exit_code, 0);
+    EXPECT_EQ(batch(dam, "two", "--threads 2").exit_code, 0);
+    EXPECT_EQ(stable(catalogue_rows(dam.dir / "one")), stable(catalogue_rows(dam.dir / "two")));
+    for (const Row& row : catalogue_rows(dam.dir / "one")) {
+        const std::string msh = row.at("id") + ".msh";
+        EXPECT_EQ(sha256_of(dam.dir / "one" / msh), sha256_of(dam.dir / "two" / msh));
+    }
+}
+
+// Kill -9 of the batch at five moments: with the plan written and no block started; in a
+// worker before it meshes; after a worker wrote its files and before the catalogue knows;
+// inside a block's catalogue transaction; after a block's row committed. The same command
+// then finishes the run, and its files and catalogue equal an uninterrupted run's.
+TEST(CliBatch, KillNineAtFiveMomentsThenResumeEqualsAnUninterruptedRun) {
+    const SmallDam dam;
+    ASSERT_EQ(batch(dam, "reference", "--threads 2").exit_code, 0);
+    const std::vector<Row> reference = stable(catalogue_rows(dam.dir / "reference"));
+
+    for (const std::string fault : {"plan:1", "start:c2-l1", "written:c1-l2", "commit:2", "recorded:3"}) {
+        SCOPED_TRACE(fault);
+        const std::string out = "killed-" + fault.substr(0, fault.find(':'));
+        const ProcessResult killed = batch(dam, out, "--threads 2", "TUBEMESH_BATCH_TEST_FAULT=" + fault);
+        EXPECT_TRUE(killed.exit_code == 137 || killed.exit_code == -1) << killed.exit_code << killed.err;
+        // Whatever is under a final name is complete: every .msh there passes the check.
+        for (const fs::directory_entry& e : fs::directory_iterator(dam.dir / out))
+            if (e.path().extension() == ".msh") {
+                EXPECT_EQ(run_command(cli() + " check " + q(e.path())).exit_code, 0) << e.path();
+            }
+
+        const ProcessResult resumed = batch(dam, out, "--threads 2");
+        ASSERT_EQ(resumed.exit_code, 0) << resumed.out << resumed.err;
+        EXPECT_EQ(stable(catalogue_rows(dam.dir / out)), reference);
+        for (const Row& row : reference)
+            EXPECT_EQ(sha256_of(dam.dir / out / (row.at("id") + ".msh")),
+                      sha256_of(dam.dir / "reference" / (row.at("id") + ".msh")));
+        for (const fs::directory_entry& e : fs::directory_iterator(dam.dir / out))
+            EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+    }
+}
+
+TEST(CliBatch, AChangedBlockIsRedoneAndUnchangedOnesAreNot) {
+    const SmallDam dam;
+    ASSERT_EQ(batch(dam, "out", "").exit_code, 0);
+    const std::vector<Row> before = catalogue_rows(dam.dir / "out");
+
+    // c1-l2 gets other options, c2-l1's mesh file is removed; the others stay as they are.
+    json m = json::parse(read_text(dam.manifest()));
+    for (json& b : m["blocks"])
+        if (b["id"] == "c1-l2") b["options"] = {{"gradation", 1.4}};
+    std::ofstream(dam.manifest()) << m.dump(2);
+    fs::remove(dam.dir / "out" / "c2-l1.msh");
+
+    const ProcessResult again = batch(dam, "out", "--verbose");
+    ASSERT_EQ(again.exit_code, 0) << again.out << again.err;
+    EXPECT_NE(again.out.find("2 done before, 2 meshed now"), std::string::npos) << again.out;
+    const std::vector<Row> after = catalogue_rows(dam.dir / "out");
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        const std::string& id = after[i].at("id");
+        const bool redone = id == "c1-l2" || id == "c2-l1";
+        EXPECT_EQ(after[i].at("worker") != before[i].at("worker"), redone) << id;
+        EXPECT_EQ(again.out.find(id + " done:") != std::string::npos, redone) << id;
+        EXPECT_EQ(after[i].at("options_sha256") != before[i].at("options_sha256"), id == "c1-l2") << id;
+    }
+    EXPECT_TRUE(fs::exists(dam.dir / "out" / "c2-l1.msh"));
+}
+
+TEST(CliBatch, ACorruptBlockFailsAloneWithItsErrorAndExitOne) {
+    const SmallDam dam;
+    std::ofstream(dam.dir / "c2-l1.step") << "ISO-10303-21;\nthis is not a STEP file\n";
+    const ProcessResult r = batch(dam, "out", "");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.err.find("block c2-l1 failed"), std::string::npos) << r.err;
+    for (const Row& row : catalogue_rows(dam.dir / "out")) {
+        EXPECT_EQ(row.at("status"), row.at("id") == "c2-l1" ? "failed" : "done") << row.at("id");
+        if (row.at("id") == "c2-l1") {
+            EXPECT_NE(row.at("error").find("c2-l1.step"), std::string::npos) << row.at("error");
+            EXPECT_EQ(row.at("error").find('\n'), std::string::npos);
+            EXPECT_FALSE(fs::exists(dam.dir / "out" / "c2-l1.msh"));
+        }
+    }
+    const ProcessResult status = run_command(cli() + " batch --status " + q(dam.dir / "out"));
+    EXPECT_EQ(status.exit_code, 1);
+    EXPECT_NE(status.out.find("3 done, 1 failed"), std::string::npos) << status.out;
+}
+
+TEST(CliBatch, ACrashingOrHangingWorkerCostsOnlyItsBlock) {
+    const SmallDam dam;
+    const ProcessResult crash = batch(dam, "crash", "--threads 2", "TUBEMESH_BATCH_TEST_FAULT=crash:c1-l2");
+    EXPECT_EQ(crash.exit_code, 1) << crash.out << crash.err;
+    const ProcessResult hang = batch(dam, "hang", "--threads 2 --time-limit 1", "TUBEMESH_BATCH_TEST_FAULT=hang:c2-l2");
+    EXPECT_EQ(hang.exit_code, 1) << hang.out << hang.err;
+    for (const auto& [out, bad, why] : {std::tuple{"crash", "c1-l2", "signal 11"}, {"hang", "c2-l2", "time limit"}})
+        for (const Row& row : catalogue_rows(dam.dir / out)) {
+            SCOPED_TRACE(std::string(out) + " " + row.at("id"));
+            EXPECT_EQ(row.at("status"), row.at("id") == bad ? "failed" : "done");
+            if (row.at("id") == bad) {
+                EXPECT_NE(row.at("error").find(why), std::string::npos) << row.at("error");
+            }
+        }
+
+    // A worker that dies once is dealt its block again, which then ends as if nothing happened.
+    ASSERT_EQ(batch(dam, "reference", "--threads 2").exit_code, 0);
+    const ProcessResult once = batch(dam, "once", "--threads 2 --verbose", "TUBEMESH_BATCH_TEST_FAULT=die-once:c2-l1");
+    EXPECT_EQ(once.exit_code, 0) << once.out << once.err;
+    EXPECT_NE(once.out.find("c2-l1: its worker died, dealt again"), std::string::npos) << once.out;
+    EXPECT_EQ(stable(catalogue_rows(dam.dir / "once")), stable(catalogue_rows(dam.dir / "reference")));
+}
+
+TEST(CliBatch, ShardsMergedEqualTheSingleRun) {
+    const SmallDam dam;
+    ASSERT_EQ(batch(dam, "single", "").exit_code, 0);
+    EXPECT_EQ(batch(dam, "sharded", "--shard 0/2").exit_code, 0);
+    EXPECT_EQ(batch(dam, "sharded", "--shard 1/2").exit_code, 0);
+    EXPECT_TRUE(fs::exists(dam.dir / "sharded" / "catalogue.shard-0-of-2.sqlite"));
+    const ProcessResult merged = run_command(cli() + " batch --merge " + q(dam.dir / "sharded"));
+    ASSERT_EQ(merged.exit_code, 0) << merged.out << merged.err;
+    EXPECT_EQ(stable(catalogue_rows(dam.dir / "sharded")), stable(catalogue_rows(dam.dir / "single")));
+}
+
+TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
+    const SmallDam dam;
+    const json good = json::parse(read_text(dam.manifest()));
+    auto with = [&](const std::function<void(json&)>& edit) {
+        json m = good;
+        edit(m);
+        const fs::path p = dam.dir / "edited.json";
+        std::ofstream(p) << m.dump(2);
+        return run_command(cli() + " batch " + q(p) + " -o " + q(dam.dir / "out"));
+    };
+    const std::vector<std::pair<ProcessResult, std::string>> cases = {
+        {with([](json& m) { m["blocks"][1]["id"] = "c1-l1"; }), "appears twice"},
+        {with([](json& m) { m["blocks"][0]["options"] = {{"gradation", 9}}; }), "gradation must be between"},
+        {with([](json& m) { m["blocks"][0]["options"] = {{"sise", 1}}; }), "unknown option \"sise\""},
+        {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
+        {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},
+        {run_command(cli() + " batch " + q(dam.manifest()) + " -o " + q(dam.dir / "o") + " --shard 2/2"), "--shard"},
+        {run_command(cli() + " batch " + q(dam.dir / "missing.json") + " -o " + q(dam.dir / "o")), "missing.json"},
+    };
+    for (const auto& [r, words] : cases) {
+        EXPECT_EQ(r.exit_code, 2) << words << ": " << r.err;
+        EXPECT_NE(r.err.find(words), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dam.dir / "out" / "catalogue.sqlite"));
+}
+
+}  // namespace
+}  // namespace tubemesh::testing

@@ -30,7 +30,7 @@ struct DamParams {
     Range diameter{0.025, 0.040};  // of the pipe, per block
     Range spacing{1.0, 2.0};     // between neighbouring runs, per block
     // Bend radius per block as a share of its spacing: at most 1/2 (serpentine_spec's limit).
-    Range bend_share{0.3, 0.5};
+    Range bend_share{0.4, 0.5};
 };
 
 struct DamBlock {

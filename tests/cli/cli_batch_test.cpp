@@ -169,7 +169,14 @@ TEST(CliBatch, ACrashingOrHangingWorkerCostsOnlyItsBlock) {
     const SmallDam dam;
     const ProcessResult crash = batch(dam, "crash", "--threads 2", "TUBEMESH_BATCH_TEST_FAULT=crash:c1-l2");
     EXPECT_EQ(crash.exit_code, 1) << crash.out << crash.err;
-    const ProcessResult hang = batch(dam, "hang", "--threads 2 --time-limit 1", "TUBEMESH_BATCH_TEST_FAULT=hang:c2-l2");
+    // The hanging block alone gets a short limit: the others must not race a clock.
+    const std::string manifest = read_text(dam.manifest());
+    json m = json::parse(manifest);
+    for (json& b : m["blocks"])
+        if (b["id"] == "c2-l2") b["options"] = {{"time_limit", 1}};
+    std::ofstream(dam.manifest()) << m.dump(2);
+    const ProcessResult hang = batch(dam, "hang", "--threads 2", "TUBEMESH_BATCH_TEST_FAULT=hang:c2-l2");
+    std::ofstream(dam.manifest()) << manifest;
     EXPECT_EQ(hang.exit_code, 1) << hang.out << hang.err;
     for (const auto& [out, bad, why] : {std::tuple{"crash", "c1-l2", "signal 11"}, {"hang", "c2-l2", "time limit"}})
         for (const Row& row : catalogue_rows(dam.dir / out)) {

@@ -7,23 +7,18 @@
 // Exit status: 0 every block done, 1 some failed (each recorded with its error), 2 the manifest
 // or the command line is wrong (one line on stderr).
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <climits>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <thread>
 
+#include "batch/batch_command.hpp"
 #include "batch/catalogue.hpp"
-#include "batch/manifest.hpp"
-#include "batch/plan.hpp"
 #include "batch/run_lock.hpp"
-#include "batch/scheduler.hpp"
 #include "batch/status.hpp"
 #include "batch/worker.hpp"
 #include "engine/core/types.hpp"
-#include "tools/cli/batch_progress.hpp"
 #include "tools/cli/commands.hpp"
 
 namespace tubemesh::cli {
@@ -33,34 +28,12 @@ namespace {
 namespace fs = std::filesystem;
 
 struct BatchArgs {
-    std::string manifest;
-    std::string outdir;
+    batch::BatchCommand command;
     std::string status_dir;
     std::string merge_dir;
-    std::string shard;
-    std::vector<std::string> formats;
-    double time_limit = -1;
     int threads = 0;
     bool csv = false;
-    bool verbose = false;
-    bool quiet = false;
 };
-
-std::string self_program() {
-    char path[PATH_MAX];
-    const ssize_t n = ::readlink("/proc/self/exe", path, sizeof path - 1);
-    if (n <= 0) throw Error("batch: cannot find this program's own path to start workers");
-    return std::string(path, static_cast<std::size_t>(n));
-}
-
-// "I/N" with 0 <= I < N.
-std::pair<int, int> parse_shard(const std::string& s) {
-    int i = -1, n = 0;
-    char slash = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || i < 0 || i >= n)
-        throw Error("--shard " + s + ": use I/N with 0 <= I < N (Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)");
-    return {i, n};
-}
 
 std::vector<batch::BlockRecord> rows_of(const fs::path& outdir) {
     const std::vector<fs::path> files = batch::catalogues_in(outdir);
@@ -96,7 +69,7 @@ int merge(const BatchArgs& a) {
     batch::RunLock lock(target);
     batch::Catalogue merged(target);
     for (const fs::path& s : shards) merged.merge_from(s);
-    if (!a.quiet) fmt::print("merged {} shard catalogues into {}\n{}", shards.size(), target.string(),
+    if (!a.command.quiet) fmt::print("merged {} shard catalogues into {}\n{}", shards.size(), target.string(),
                              batch::status_text(merged.all()));
     for (const batch::BlockRecord& r : merged.all())
         if (r.status != "done") return 1;
@@ -104,55 +77,14 @@ int merge(const BatchArgs& a) {
 }
 
 int run(const BatchArgs& a) {
-    if (a.manifest.empty()) throw Error("batch needs a MANIFEST (or --status OUTDIR, --merge OUTDIR)");
-    if (a.outdir.empty()) throw Error("batch needs -o OUTDIR, the folder for the meshes and the catalogue");
-    int shard = -1, shards = 0;
-    if (!a.shard.empty()) std::tie(shard, shards) = parse_shard(a.shard);
-
-    nlohmann::json overrides = nlohmann::json::object();
-    if (!a.formats.empty()) overrides["formats"] = a.formats;
-    if (a.time_limit >= 0) overrides["time_limit"] = a.time_limit;
-    const batch::Manifest manifest = batch::read_manifest(a.manifest, overrides);  // Error -> exit 2
-
-    const fs::path outdir = fs::absolute(a.outdir);
-    std::error_code ec;
-    fs::create_directories(outdir, ec);
-    if (!fs::is_directory(outdir)) throw Error("cannot create the output folder '" + outdir.string() + "'");
-    const fs::path catalogue_file = batch::catalogue_path(outdir, shard, shards);
-    batch::RunLock lock(catalogue_file);
-    batch::Catalogue catalogue(catalogue_file);
-
-    const std::vector<const batch::BlockEntry*> blocks = batch::shard_blocks(manifest, shard, shards);
-    const int threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    // Blocks that are done need no slot: size the slots on what is left to do.
-    std::size_t todo = 0;
-    for (const batch::BlockEntry* b : blocks) {
-        const auto row = catalogue.get(b->id);
-        todo += !(row && batch::done_and_intact(*row, *b, outdir));
-    }
-    const batch::SlotPlan slots = batch::plan_slots(threads, todo);
-    batch::LocalExecutor executor({self_program(), {"batch-worker"}}, slots.slots, slots.threads);
-
-    auto display = std::make_shared<BatchProgressLine>(a.quiet, a.verbose);
-    batch::BatchRun run;
-    run.outdir = outdir;
-    run.progress = [display](const batch::BatchProgress& p) { (*display)(p); };
-    const batch::BatchSummary s = batch::run_blocks(executor, catalogue, blocks, run);
-    display->close();
-
-    if (!a.quiet) {
-        fmt::print("{}: {} blocks{}, {} done before, {} meshed now, {} failed; {} elements in {:.1f} s ({:.0f} elements/s, "
-                   "{} side by side, {} thread{} each)\n",
-                   manifest.name, s.total, shards > 0 ? fmt::format(" in shard {}/{}", shard, shards) : "", s.skipped,
-                   s.done, s.failed, s.elements, s.seconds, s.seconds > 0 ? s.elements / s.seconds : 0.0, slots.slots,
-                   slots.threads, slots.threads == 1 ? "" : "s");
-        for (const batch::BlockRecord& r : catalogue.all())
-            if (r.status == "failed") fmt::print(stderr, "tubemesh: block {} failed: {}\n", r.id, r.error);
-        fmt::print("catalogue: {}\n", catalogue_file.string());
-    }
-    for (const batch::BlockRecord& r : catalogue.all())
-        if (r.status != "done") return 1;
-    return 0;
+    const int cores = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return batch::run_batch_command(a.command, [&](std::size_t blocks) {
+        const batch::SlotPlan slots = batch::plan_slots(cores, blocks);
+        return batch::ExecutorChoice{
+            std::make_unique<batch::LocalExecutor>(batch::WorkerCommand{batch::self_program(), {"batch-worker"}},
+                                                   slots.slots, slots.threads),
+            fmt::format("{} side by side, {} thread{} each", slots.slots, slots.threads, slots.threads == 1 ? "" : "s")};
+    });
 }
 
 }  // namespace
@@ -160,19 +92,19 @@ int run(const BatchArgs& a) {
 Command add_batch_command(CLI::App& app) {
     auto args = std::make_shared<BatchArgs>();
     CLI::App* cmd = app.add_subcommand("batch", "Mesh every block of a batch manifest, resumably, with a catalogue");
-    cmd->add_option("MANIFEST", args->manifest, "The batch manifest (JSON; `tubemesh make-dam` writes one)");
-    cmd->add_option("-o,--output", args->outdir, "Folder for the meshes, reports and the catalogue");
+    cmd->add_option("MANIFEST", args->command.manifest, "The batch manifest (JSON; `tubemesh make-dam` writes one)");
+    cmd->add_option("-o,--output", args->command.outdir, "Folder for the meshes, reports and the catalogue");
     cmd->add_option("--threads", args->threads,
                     "Cores to use (default: all): blocks side by side, one thread each, when they outnumber the "
                     "cores; else the cores shared among the blocks")
         ->check(CLI::Range(1, 4096));
-    cmd->add_option("--formats", args->formats, "Mesh formats for every block: msh, vtu, inp (default: the manifest's)")
+    cmd->add_option("--formats", args->command.formats, "Mesh formats for every block: msh, vtu, inp (default: the manifest's)")
         ->delimiter(',');
-    cmd->add_option("--time-limit", args->time_limit,
+    cmd->add_option("--time-limit", args->command.time_limit,
                     "Seconds a block may take before its worker is killed and the block failed (default: the "
                     "manifest's, else 3600; 0: none)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--shard", args->shard,
+    cmd->add_option("--shard", args->command.shard,
                     "Mesh only share I of N (blocks whose manifest position is I mod N), with its own catalogue "
                     "(Slurm: --shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)")
         ->option_text("I/N");
@@ -181,8 +113,8 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_flag("--csv", args->csv, "With --status: print the catalogue as CSV, one row per block");
     cmd->add_option("--merge", args->merge_dir, "Join the shard catalogues in OUTDIR into its catalogue.sqlite")
         ->option_text("OUTDIR");
-    cmd->add_flag("--verbose", args->verbose, "A line per block as it ends");
-    cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
+    cmd->add_flag("--verbose", args->command.verbose, "A line per block as it ends");
+    cmd->add_flag("--quiet", args->command.quiet, "Print nothing but errors");
     cmd->footer(
         "Files per block in OUTDIR: <id>.<format> and <id>.report.json; catalogue.sqlite (SQLite; one per shard).\n"
         "Exit status: 0 every block done, 1 some failed (see --status), 2 the manifest or the command line is wrong.");

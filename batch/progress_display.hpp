@@ -7,18 +7,18 @@
 
 #include "batch/scheduler.hpp"
 
-namespace tubemesh::cli {
+namespace tubemesh::batch {
 
-class BatchProgressLine {
+class ProgressDisplay {
 public:
-    BatchProgressLine(bool quiet, bool verbose);
-    void operator()(const batch::BatchProgress& p);
+    ProgressDisplay(bool quiet, bool verbose);
+    void operator()(const BatchProgress& p);
     void close();  // ends a half-drawn terminal line
 
 private:
-    std::string status(const batch::BatchProgress& p) const;
+    std::string status(const BatchProgress& p) const;
     bool quiet_, verbose_, terminal_;
     bool open_ = false;
 };
 
-}  // namespace tubemesh::cli
+}  // namespace tubemesh::batch

@@ -1,11 +1,11 @@
-#include "tools/cli/batch_progress.hpp"
+#include "batch/progress_display.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <cstdio>
 
-namespace tubemesh::cli {
+namespace tubemesh::batch {
 
 namespace {
 
@@ -17,10 +17,10 @@ std::string duration(double s) {
 
 }  // namespace
 
-BatchProgressLine::BatchProgressLine(bool quiet, bool verbose)
+ProgressDisplay::ProgressDisplay(bool quiet, bool verbose)
     : quiet_(quiet), verbose_(verbose && !quiet), terminal_(isatty(fileno(stderr)) != 0) {}
 
-std::string BatchProgressLine::status(const batch::BatchProgress& p) const {
+std::string ProgressDisplay::status(const BatchProgress& p) const {
     const int todo = p.total - p.skipped, finished = p.done + p.failed;
     std::string s = fmt::format("batch {}/{} done, {} failed, {} running", p.skipped + p.done, p.total, p.failed,
                                 p.running);
@@ -29,12 +29,12 @@ std::string BatchProgressLine::status(const batch::BatchProgress& p) const {
     return s;
 }
 
-void BatchProgressLine::operator()(const batch::BatchProgress& p) {
-    using Event = batch::BatchProgress::Event;
+void ProgressDisplay::operator()(const BatchProgress& p) {
+    using Event = BatchProgress::Event;
     if (quiet_) return;
     if (verbose_ && p.event == Event::Finished && p.record) {
         close();
-        const batch::BlockRecord& r = *p.record;
+        const BlockRecord& r = *p.record;
         if (r.status == "done")
             fmt::print("{} done: {} elements ({} hex, {} pyramid, {} tet), min tet collapse {:.3f}, {:.1f} s\n", r.id,
                        r.elements(), r.hexes, r.pyramids, r.tets, r.tet_collapse.min, r.seconds);
@@ -59,10 +59,10 @@ void BatchProgressLine::operator()(const batch::BatchProgress& p) {
     std::fflush(stdout);
 }
 
-void BatchProgressLine::close() {
+void ProgressDisplay::close() {
     if (open_) fmt::print(stderr, "\r\033[K");
     std::fflush(stderr);
     open_ = false;
 }
 
-}  // namespace tubemesh::cli
+}  // namespace tubemesh::batch

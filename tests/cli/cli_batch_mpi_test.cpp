@@ -24,12 +24,19 @@ std::string mpirun(const std::string& fault = "") {
 #endif
 }
 
-TEST(CliBatchMpi, TwoRanksWriteWhatOneMachineWrites) {
+// The small dam and its single-machine run, to compare with.
+class CliBatchMpi : public ::testing::Test {
+protected:
+    void SetUp() override {
 #ifndef TUBEMESH_MPI
-    GTEST_SKIP() << "tubemesh-mpi was not built: CMake found no MPI (install libopenmpi-dev)";
+        GTEST_SKIP() << "tubemesh-mpi was not built: CMake found no MPI (install libopenmpi-dev)";
 #endif
+        ASSERT_EQ(batch(dam, "single", "").exit_code, 0);
+    }
     const SmallDam dam;
-    ASSERT_EQ(batch(dam, "single", "").exit_code, 0);
+};
+
+TEST_F(CliBatchMpi, TwoRanksWriteWhatOneMachineWrites) {
     const ProcessResult r = run_command(mpirun() + " batch " + q(dam.manifest()) + " -o " + q(dam.dir / "mpi"));
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
     const std::vector<Row> rows = catalogue_rows(dam.dir / "mpi");
@@ -46,12 +53,7 @@ TEST(CliBatchMpi, TwoRanksWriteWhatOneMachineWrites) {
     EXPECT_NE(again.out.find("4 done before, 0 meshed now"), std::string::npos) << again.out;
 }
 
-TEST(CliBatchMpi, ADeadWorkersBlockIsDealtAgain) {
-#ifndef TUBEMESH_MPI
-    GTEST_SKIP() << "tubemesh-mpi was not built: CMake found no MPI (install libopenmpi-dev)";
-#endif
-    const SmallDam dam;
-    ASSERT_EQ(batch(dam, "single", "").exit_code, 0);
+TEST_F(CliBatchMpi, ADeadWorkersBlockIsDealtAgain) {
     const ProcessResult r =
         run_command(mpirun("die-once:c1-l2") + " batch " + q(dam.manifest()) + " -o " + q(dam.dir / "mpi") + " --verbose");
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;

@@ -100,6 +100,8 @@ def main():
     by = {r["mode"]: r for r in rows}
     result = {"benchmark": "batch throughput", "dam": f"make-dam --columns {a.columns} --lifts {a.lifts} (seed 1)",
               "machine": f"{os.cpu_count()} cores", "date": str(datetime.date.today()), "modes": rows,
+              # Other work on the machine skews every figure: the 1-minute load when the run ended.
+              "load_average_at_end": round(os.getloadavg()[0], 2),
               "ratio_2_threads_over_1": round(by["2 threads"]["elements_per_second"] /
                                               by["1 thread"]["elements_per_second"], 3)}
     with open(a.out, "w") as f:

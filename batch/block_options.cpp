@@ -25,8 +25,9 @@ constexpr Key kNumbers[] = {{"size", false},      {"sweep_size", false},     {"c
 void check_formats(const nlohmann::json& v, const std::string& where) {
     if (!v.is_array() || v.empty()) throw Error(where + ": \"formats\" must be a non-empty list such as [\"msh\"]");
     for (const nlohmann::json& f : v)
-        if (!f.is_string() || (f != "msh" && f != "vtu" && f != "inp"))
-            throw Error(where + ": \"formats\" takes \"msh\", \"vtu\" and \"inp\", got " + f.dump());
+        if (!f.is_string() || (f != "msh" && f != "vtu" && f != "inp" && f != "html"))
+            throw Error(where + ": \"formats\" takes \"msh\", \"vtu\", \"inp\" and \"html\" (the block's report), got " +
+                        f.dump());
 }
 
 // Types here; ranges by run::mesh_options once the block's options are complete.

@@ -3,7 +3,7 @@
 //
 //   size S, sweep_size St, circ n, layers L, axial_aspect, pyramid_height, gradation,
 //   tet_parts, tet_relax, max_elements, solid K (null: automatic, as when left out),
-//   formats ["msh", "vtu", "inp"], time_limit (seconds per block; 0: none)
+//   formats ["msh", "vtu", "inp", "html" (the block's HTML report)], time_limit (seconds per block; 0: none)
 //
 // The meshing options are run::MeshSettings (tools/run/mesh_settings.hpp) under the Python
 // module's keywords: the same meaning, defaults and ranges as `tubemesh mesh`'s flags.

@@ -1,7 +1,8 @@
 // `tubemesh batch MANIFEST -o OUTDIR [--threads T] [--formats LIST] [--time-limit S]
 // [--shard I/N] [--verbose] [--quiet]`: mesh every block of a manifest (batch/manifest.hpp),
 // each in its own worker process, and keep the run's catalogue in OUTDIR. Started again with the
-// same command it redoes only what is not done. `--status OUTDIR [--csv]` shows a catalogue;
+// same command it redoes only what is not done. `--status OUTDIR [--csv] [--html FILE]` shows a
+// catalogue (and writes it as an HTML page);
 // `--merge OUTDIR` joins the shards' catalogues into OUTDIR/catalogue.sqlite.
 //
 // Exit status: 0 every block done, 1 some failed (each recorded with its error), 2 the manifest
@@ -17,6 +18,8 @@
 #include "batch/catalogue.hpp"
 #include "batch/run_lock.hpp"
 #include "batch/status.hpp"
+#include "batch/status_html.hpp"
+#include "tools/run/outputs.hpp"
 #include "batch/worker.hpp"
 #include "engine/core/types.hpp"
 #include "tools/cli/commands.hpp"
@@ -31,6 +34,7 @@ struct BatchArgs {
     batch::BatchCommand command;
     std::string status_dir;
     std::string merge_dir;
+    std::string html;
     int threads = 0;
     bool csv = false;
 };
@@ -48,7 +52,9 @@ std::vector<batch::BlockRecord> rows_of(const fs::path& outdir) {
 }
 
 int show_status(const BatchArgs& a) {
+    if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
     const std::vector<batch::BlockRecord> rows = rows_of(a.status_dir);
+    if (!a.html.empty()) run::write_text(a.html, batch::status_html(rows));
     fmt::print("{}", a.csv ? batch::status_csv(rows) : batch::status_text(rows));
     for (const batch::BlockRecord& r : rows)
         if (r.status != "done") return 1;
@@ -98,7 +104,8 @@ Command add_batch_command(CLI::App& app) {
                     "Cores to use (default: all): blocks side by side, one thread each, when they outnumber the "
                     "cores; else the cores shared among the blocks")
         ->check(CLI::Range(1, 4096));
-    cmd->add_option("--formats", args->command.formats, "Mesh formats for every block: msh, vtu, inp (default: the manifest's)")
+    cmd->add_option("--formats", args->command.formats,
+                    "Files for every block: msh, vtu, inp, html (its HTML report) (default: the manifest's)")
         ->delimiter(',');
     cmd->add_option("--time-limit", args->command.time_limit,
                     "Seconds a block may take before its worker is killed and the block failed (default: the "
@@ -111,6 +118,10 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("--status", args->status_dir, "Print the summary of the catalogue in OUTDIR and exit")
         ->option_text("OUTDIR");
     cmd->add_flag("--csv", args->csv, "With --status: print the catalogue as CSV, one row per block");
+    cmd->add_option("--html", args->html,
+                    "With --status: also write the catalogue as one self-contained HTML page (charts per block, the "
+                    "blocks' table linking each block's own report where the formats had html)")
+        ->option_text("FILE.html");
     cmd->add_option("--merge", args->merge_dir, "Join the shard catalogues in OUTDIR into its catalogue.sqlite")
         ->option_text("OUTDIR");
     cmd->add_flag("--verbose", args->command.verbose, "A line per block as it ends");
@@ -122,6 +133,7 @@ Command add_batch_command(CLI::App& app) {
     return {cmd, [args]() -> int {
         if (!args->status_dir.empty()) return show_status(*args);
         if (args->csv) throw Error("--csv goes with --status OUTDIR");
+        if (!args->html.empty()) throw Error("--html goes with --status OUTDIR");
         if (!args->merge_dir.empty()) return merge(*args);
         return run(*args);
     }};

@@ -14,6 +14,8 @@ TUBEMESH_INCBIN(tubemesh_chart_js, TUBEMESH_CHART_JS)
 TUBEMESH_INCBIN(tubemesh_page_js, TUBEMESH_PAGE_JS)
 TUBEMESH_INCBIN(tubemesh_page_css, TUBEMESH_PAGE_CSS)
 TUBEMESH_INCBIN(tubemesh_page_body, TUBEMESH_PAGE_BODY)
+TUBEMESH_INCBIN(tubemesh_batch_js, TUBEMESH_BATCH_JS)
+TUBEMESH_INCBIN(tubemesh_batch_body, TUBEMESH_BATCH_BODY)
 
 namespace tubemesh::run {
 
@@ -31,6 +33,8 @@ const HtmlAssets& html_assets() {
         between(tubemesh_page_js, tubemesh_page_js_end),
         between(tubemesh_page_css, tubemesh_page_css_end),
         between(tubemesh_page_body, tubemesh_page_body_end),
+        between(tubemesh_batch_js, tubemesh_batch_js_end),
+        between(tubemesh_batch_body, tubemesh_batch_body_end),
     };
     return assets;
 }

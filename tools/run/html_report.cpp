@@ -74,18 +74,23 @@ std::string html_report(const geom::MeshRun& run) {
                                  {"view", cut_view_json(run, primary)}};
 
     const HtmlAssets& a = html_assets();
+    return html_page(a.page_body, data, {a.three_js, a.orbit_controls_js, a.chart_js, a.page_js});
+}
+
+std::string html_page(std::string_view body, const nlohmann::json& data, std::initializer_list<std::string_view> scripts) {
+    const HtmlAssets& a = html_assets();
     std::string page;
     page.reserve(a.three_js.size() + a.chart_js.size() + (1 << 20));
     page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-    page += "<title>tubemesh report</title>\n";  // report.js adds the source
+    page += "<title>tubemesh report</title>\n";  // the page's script names the source
     page += "<style>\n";
     page += a.page_css;
     page += "</style>\n</head>\n<body>\n";
-    page += a.page_body;
+    page += body;
     page += "<script type=\"application/json\" id=\"tubemesh-data\">";
     page += script_safe(data.dump());
     page += "</script>\n";
-    for (std::string_view js : {a.three_js, a.orbit_controls_js, a.chart_js, a.page_js}) {
+    for (std::string_view js : scripts) {
         page += "<script>\n";
         page += js;
         page += "\n</script>\n";

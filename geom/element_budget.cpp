@@ -35,7 +35,8 @@ double smallest_fitting_size(double volume, double area, const std::vector<TubeE
     return hi;
 }
 
-std::string source_note(const std::string& source) { return source == "user" ? "given" : "default: " + source; }
+// The sources already read "default: ..." unless the user gave the size.
+std::string source_note(const std::string& source) { return source == "user" ? "given" : source; }
 
 }  // namespace
 
@@ -89,6 +90,12 @@ ElementEstimate check_element_budget(double volume, double area, const std::vect
                                 "in the unit you meant?)",
                                 size, source_note(context.size_source), context.extent, e.total(), limit_text,
                                 fitting));
+    if (context.ring_nodes > 0)
+        throw Error(fmt::format("--circ {} puts too many nodes around the tubes ({:.6g} long in all, {}): the hex rings "
+                                "alone would have at least {:.3g} elements, more than {}; give a smaller --circ or "
+                                "leave it out",
+                                context.ring_nodes, tube_length(tubes), context.extent, e.hexes + e.pyramids,
+                                limit_text));
     throw Error(fmt::format("the sweep size St = {:.6g} ({}) is too small for tubes {:.6g} long in all ({}): the hex "
                             "rings alone would have at least {:.3g} elements, more than {}; give a larger "
                             "--sweep-size or --axial-aspect",

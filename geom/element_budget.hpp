@@ -66,6 +66,7 @@ struct BudgetContext {
     std::string size_source;   // "user" or the default's formula (SizePlan::size_source)
     std::string sweep_source;  // likewise for St
     std::string extent;        // "4000 x 4000 x 4000 millimetre"
+    int ring_nodes = 0;        // n around each tube when the user gave it (--circ), else 0
 };
 
 // The estimate, or tubemesh::Error when it exceeds element_limit(budget): the message gives

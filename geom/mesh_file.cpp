@@ -1,11 +1,10 @@
 #include "geom/mesh_file.hpp"
 
-#include <tbb/global_control.h>
-
 #include <chrono>
 #include <optional>
 
 #include "engine/pipeline/stage_check.hpp"
+#include "engine/pipeline/thread_limit.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/describe_groups.hpp"
@@ -19,15 +18,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// oneTBB's limit for the whole call (import, prepare, check), not only the pipeline.
-std::optional<tbb::global_control> limit_threads(const MeshOptions& options) {
-    if (options.threads < 0) throw Error("the thread count must be positive (0: all cores)");
-    std::optional<tbb::global_control> limit;
-    if (options.threads > 0)
-        limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.threads));
-    return limit;
-}
 
 PhaseReport model_phase(const char* name, double seconds, const Model& model) {
     return {name, seconds, {{"faces", double(model.face_count())}, {"edges", double(model.edge_count())}}, {}};
@@ -62,7 +52,7 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
 }  // namespace
 
 MeshRun mesh_file(const std::filesystem::path& path, const MeshOptions& options, const MeshFileOptions& file) {
-    const auto limit = limit_threads(options);
+    const auto limit = limit_threads(options.threads);
     const auto t0 = Clock::now();
     PhaseProgress progress(options.progress, "import", 1);
     ImportOptions import;
@@ -73,7 +63,7 @@ MeshRun mesh_file(const std::filesystem::path& path, const MeshOptions& options,
 }
 
 MeshRun mesh_model(const Model& model, const MeshOptions& options, Stage until) {
-    const auto limit = limit_threads(options);
+    const auto limit = limit_threads(options.threads);
     return mesh_loaded(model, options, until, std::nullopt);
 }
 
@@ -82,7 +72,7 @@ MeshRun mesh_preset(const std::string& preset, const MeshOptions& options, Stage
 }
 
 MeshRun mesh_spec(const BlockSpec& spec, const MeshOptions& options, Stage until) {
-    const auto limit = limit_threads(options);
+    const auto limit = limit_threads(options.threads);
     const auto t0 = Clock::now();
     PhaseProgress progress(options.progress, "build", 1);
     const BuiltBlock block = build_block(spec);

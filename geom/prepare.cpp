@@ -79,7 +79,8 @@ ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes
     const BoundingBox b = non_wall_box(model, tubes.tubes);
     const BudgetContext context{plan.size_source, plan.sweep_source,
                                 fmt::format("{:.6g} x {:.6g} x {:.6g} {}", b.max.x - b.min.x, b.max.y - b.min.y,
-                                            b.max.z - b.min.z, model.report().length_unit)};
+                                            b.max.z - b.min.z, model.report().length_unit),
+                                options.discretize.ring_nodes};
     return check_element_budget(in.measures.volume, in.measures.area, in.extents, plan.size, plan.sweep_size,
                                 options.budget, context);
 }

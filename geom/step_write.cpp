@@ -5,9 +5,13 @@
 #include <Standard_Failure.hxx>
 #include <StepData_StepModel.hxx>
 
+#include <unistd.h>
+
+#include <string>
 #include <string_view>
 
 #include "engine/core/types.hpp"
+#include "engine/io/temporary_files.hpp"
 #include "geom/model_occt.hpp"
 #include "geom/occt_messages.hpp"
 #include "geom/step_write_occt.hpp"
@@ -43,7 +47,8 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
     silence_occt_output();
     const StepUnit& unit = step_unit(length_unit);
     std::filesystem::path tmp = path;
-    tmp += ".tmp-tubemesh";
+    tmp += ".tmp-tubemesh-" + std::to_string(::getpid());  // two runs writing one target keep apart
+    const io::TrackedTemporary tracked(tmp);
     try {
         const XstepSession session;
         STEPControl_Writer writer;

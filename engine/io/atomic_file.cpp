@@ -34,19 +34,27 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
 
 std::string reason(int error_number) { return std::generic_category().message(error_number); }
 
+thread_local CommitGroup* current_group = nullptr;
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
     if (target_.filename().empty()) throw Error("cannot write '" + target_.string() + "': the path names no file");
     // O_EXCL: never reuse a name someone else is writing; 0666 lets the umask decide the
     // final permissions, as for any other file the user creates.
+    // Tracked before it exists, so that a signal right after the open still finds it; the
+    // name holds our pid, so what an interrupt could unlink there is ours or a dead run's.
+    int open_error = 0;
     for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
         temporary_ = temporary_name(target_);
+        tracked_ = TrackedTemporary(temporary_);
         fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd_ < 0 && errno != EEXIST) break;
+        open_error = errno;
+        if (fd_ < 0) tracked_.release();
+        if (fd_ < 0 && open_error != EEXIST) break;
     }
     if (fd_ < 0) {
-        const int error_number = errno;
+        const int error_number = open_error;
         temporary_.clear();
         const std::filesystem::path dir = target_.has_parent_path() ? target_.parent_path() : ".";
         throw Error("cannot write '" + target_.string() + "': cannot create a file in '" + dir.string() +
@@ -94,8 +102,13 @@ void AtomicFile::commit() {
     if (::fsync(fd_) != 0) fail("cannot write", errno);
     const int fd = std::exchange(fd_, -1);
     if (::close(fd) != 0) fail("cannot write", errno);
+    if (current_group) {
+        current_group->pending_.push_back({std::exchange(temporary_, {}), target_, std::move(tracked_)});
+        return;
+    }
     if (std::rename(temporary_.c_str(), target_.c_str()) != 0) fail("cannot replace", errno);
     temporary_.clear();
+    tracked_.release();
 }
 
 void AtomicFile::fail(const char* action, int error_number) {
@@ -109,6 +122,29 @@ void AtomicFile::discard() noexcept {
         ::unlink(temporary_.c_str());
         temporary_.clear();
     }
+    tracked_.release();
+}
+
+CommitGroup::CommitGroup() : outer_(std::exchange(current_group, this)) {}
+
+CommitGroup::~CommitGroup() {
+    current_group = outer_;
+    for (Pending& p : pending_) ::unlink(p.temporary.c_str());
+}
+
+void CommitGroup::commit() {
+    // Only renames within the targets' folders are left: the writing, where a full disk or an
+    // interrupt strikes, is over for every file before the first target changes.
+    for (std::size_t i = 0; i < pending_.size(); ++i) {
+        if (std::rename(pending_[i].temporary.c_str(), pending_[i].target.c_str()) != 0) {
+            const int error_number = errno;
+            const std::string target = pending_[i].target.string();
+            pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i));
+            throw Error("cannot replace '" + target + "': " + reason(error_number));
+        }
+        pending_[i].tracked.release();
+    }
+    pending_.clear();
 }
 
 }  // namespace tubemesh::io

@@ -6,6 +6,7 @@
 // target. Destroying an uncommitted AtomicFile - an exception while writing, a failed
 // commit - removes the temporary, so a failure never leaves a partial mesh behind.
 // Every error is a tubemesh::Error naming the target path and the system's reason.
+// The temporary is tracked (engine/io/temporary_files.hpp), so an interrupt removes it too.
 #include <bit>
 #include <charconv>
 #include <cstddef>
@@ -16,6 +17,8 @@
 #include <string_view>
 #include <type_traits>
 #include <vector>
+
+#include "engine/io/temporary_files.hpp"
 
 namespace tubemesh::io {
 
@@ -48,7 +51,8 @@ public:
         write_bytes(text, static_cast<std::size_t>(result.ptr - text));
     }
 
-    // Flushes, syncs and renames over the target. Nothing may be written afterwards.
+    // Flushes, syncs and renames over the target (inside a CommitGroup: leaves the rename to
+    // the group). Nothing may be written afterwards.
     void commit();
 
     const std::filesystem::path& target() const { return target_; }
@@ -60,9 +64,33 @@ private:
 
     std::filesystem::path target_;
     std::filesystem::path temporary_;
+    TrackedTemporary tracked_;
     int fd_ = -1;
     std::vector<char> buffer_;
     std::size_t used_ = 0;
+};
+
+// Several outputs that appear all or none: while a group lives, AtomicFile::commit() on the
+// same thread completes each file under its temporary name, and the group's commit() renames
+// them all. Destroying the group first removes the temporaries, so a run that fails at its
+// third file leaves the first two targets as they were, including files that existed before.
+class CommitGroup {
+public:
+    CommitGroup();
+    ~CommitGroup();
+    CommitGroup(const CommitGroup&) = delete;
+    CommitGroup& operator=(const CommitGroup&) = delete;
+
+    void commit();
+
+private:
+    friend class AtomicFile;
+    struct Pending {
+        std::filesystem::path temporary, target;
+        TrackedTemporary tracked;
+    };
+    std::vector<Pending> pending_;
+    CommitGroup* outer_;
 };
 
 }  // namespace tubemesh::io

@@ -1,7 +1,5 @@
 #include "engine/pipeline/pipeline.hpp"
 
-#include <tbb/global_control.h>
-
 #include <algorithm>
 #include <chrono>
 #include <memory>
@@ -12,6 +10,7 @@
 #include "engine/surface/face_boundaries.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
+#include "engine/pipeline/thread_limit.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
 
 namespace tubemesh {
@@ -219,7 +218,7 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
     PhaseProgress progress(opt.progress, "tets", 3);  // recovery, refinement + relaxation, optimisation
     tets::TetStepOptions to = opt.tets;
     to.far_size = tet_far_size(in, opt);
-    to.threads = opt.threads > 0 ? static_cast<unsigned>(opt.threads) : 0;
+    to.threads = 0;  // the run's oneTBB limit, already capped at the cores (thread_limit.hpp)
     to.part_done = [&progress] { progress.advance(); };
     out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), to);
     const tets::TetStepStats& s = out.tet_stats;
@@ -281,10 +280,7 @@ void run_phases(const PipelineInput& input, const MeshOptions& options, Stage un
 }  // namespace
 
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options, Stage until) {
-    if (options.threads < 0) throw Error("the thread count must be positive (0: all cores)");
-    std::optional<tbb::global_control> threads;
-    if (options.threads > 0)
-        threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(options.threads));
+    const auto threads = limit_threads(options.threads);
 
     PipelineResult out;
     run_phases(input, options, until, out);

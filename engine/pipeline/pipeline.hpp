@@ -105,7 +105,8 @@ struct MeshOptions {
     // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5, 2 Delaunay parts).
     // far_size = 0 (the default) takes S; threads come from the field below.
     tets::TetStepOptions tets;
-    // oneTBB worker threads for the whole run; 0 (default) lets oneTBB choose (all cores).
+    // oneTBB worker threads for the whole run, capped at the usable cores
+    // (engine/pipeline/thread_limit.hpp); 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
     // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
     // from the solid's volume and area, S, St and the tubes' length (geom/element_budget.hpp).

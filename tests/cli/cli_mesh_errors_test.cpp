@@ -89,10 +89,10 @@ TEST_F(CliMeshErrors, SeveralSolidsWithoutSolidOption) {
     expect_error(q(dir / "two.step"), "", "--solid");
 }
 
-TEST_F(CliMeshErrors, NegativeSize) { expect_error(q(pipe()), "--size=-1", "--size must be a positive number"); }
+TEST_F(CliMeshErrors, NegativeSize) { expect_error(q(pipe()), "--size=-1", "--size: must be a positive number"); }
 
 TEST_F(CliMeshErrors, NanSweepSize) {
-    expect_error(q(pipe()), "--sweep-size nan", "--sweep-size must be a positive number");
+    expect_error(q(pipe()), "--sweep-size nan", "--sweep-size: must be a positive number");
 }
 
 TEST_F(CliMeshErrors, SweepSizeNotBelowSize) {

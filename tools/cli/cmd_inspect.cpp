@@ -18,6 +18,7 @@
 #include "geom/surface_map_occt.hpp"
 #include "geom/tubes.hpp"
 #include "tools/cli/commands.hpp"
+#include "tools/cli/option_checks.hpp"
 
 namespace tubemesh::cli {
 
@@ -178,11 +179,11 @@ Command add_inspect_command(CLI::App& app) {
     cmd->add_option("FILE", args->path, "CAD file (STEP, IGES or BREP)")->required();
     cmd->add_flag("--json", args->json, "Print one JSON object (with a `tubes` array) instead of text");
     cmd->add_option("--size", args->size, "Overall mesh size S (default: bounding-box diagonal / 25)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--sweep-size", args->sweep_size, "Hex ring thickness St (default: smallest tube diameter)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_number(1, 1 << 30));
     cmd->footer("Exit status: 0 inspected, 2 the file cannot be imported.");
     return {cmd, [args]() -> int {
                 geom::ImportOptions import;

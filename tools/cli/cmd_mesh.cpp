@@ -9,8 +9,8 @@
 //
 // Safety: arguments, output formats and output folders are checked before any work; the mesh
 // passes the stage's check (engine/pipeline/stage_check.hpp) before any file is written; each
-// file is written to a temporary name and renamed, and if a later file fails the earlier ones
-// of this run are removed. Any error: one line on stderr, exit 2, no output file.
+// file is written to a temporary name, and the names are renamed only once every file is
+// complete. Any error: one line on stderr, exit 2, no output file, earlier files untouched.
 #include <fmt/format.h>
 
 #include <optional>
@@ -21,6 +21,7 @@
 #include "engine/io/mesh_io.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
+#include "tools/cli/option_checks.hpp"
 #include "tools/cli/progress_line.hpp"
 #include "tools/run/html_report.hpp"
 #include "tools/run/mesh_report.hpp"
@@ -55,7 +56,11 @@ void take_if_given(std::optional<T>& setting, const CLI::Option* option, T value
     if (option->count() > 0) setting = value;
 }
 
-CLI::Validator in_range(run::Range r) { return CLI::Range(r.lo, r.hi); }
+// The ranges as parse-time checks in plain numbers (tools/cli/option_checks.hpp).
+CLI::Validator whole_in(run::Range r) {
+    return whole_number(static_cast<long long>(r.lo), static_cast<long long>(r.hi));
+}
+CLI::Validator number_in(run::Range r) { return number_between(r.lo, r.hi); }
 
 void check_outputs(const MeshArgs& a, Stage until) {
     for (const std::string& out : a.outputs) run::check_mesh_output(out, until);
@@ -63,7 +68,8 @@ void check_outputs(const MeshArgs& a, Stage until) {
     if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
 }
 
-// All files or none: a failure removes what this run already wrote.
+// All files or none: every file is complete under a temporary name before any target is
+// replaced, so a failure (or an interrupt) leaves the targets, old files included, as they were.
 void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions options) {
     options.description = &meshed.result.description;
     std::vector<std::pair<std::string, std::string>> texts;
@@ -98,53 +104,55 @@ Command add_mesh_command(CLI::App& app) {
                     "Abaqus / CalculiX); repeat for several. Default without IN: dam_block.msh and dam_block.vtu")
         ->allow_extra_args(false);  // `-o a.msh IN` must not take IN as a second output
     args->size_option = cmd->add_option("--size", args->size,
-                                        "Overall mesh size S (default: bounding-box diagonal / 25, at least 1.3 St)");
+                                        "Overall mesh size S (default: bounding-box diagonal / 25, at least 1.3 St)")
+                            ->check(positive_number());
     args->sweep_option = cmd->add_option(
         "--sweep-size", args->sweep_size,
         "Hex ring thickness St (default: smallest tube diameter, cut by the paper's rules; a given St the rules "
-        "would cut is an error)");
+        "would cut is an error)")
+                             ->check(positive_number());
     args->circ_option =
         cmd->add_option("--circ", args->circumferential,
                         "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 8)")
-            ->check(in_range(run::kCircRange));
+            ->check(whole_in(run::kCircRange));
     cmd->add_option("--layers", args->settings.layers,
                     fmt::format("Hex layers across the ring, L (default {}, graded {} towards the wall)", d.layers,
                                 run::default_mesh_options().sweep.grading))
-        ->check(in_range(run::kLayersRange));
+        ->check(whole_in(run::kLayersRange));
     cmd->add_option("--axial-aspect", args->settings.axial_aspect,
                     fmt::format("Axial step of the hex rings over St (default {})", d.axial_aspect))
-        ->check(in_range(run::kAxialAspectRange));
+        ->check(number_in(run::kAxialAspectRange));
     cmd->add_option("--pyramid-height", args->settings.pyramid_height,
                     fmt::format("Pyramid apex height over the quad's mean edge (default {}, the paper's)",
                                 d.pyramid_height))
-        ->check(in_range(run::kPyramidHeightRange));
+        ->check(number_in(run::kPyramidHeightRange));
     cmd->add_option("--gradation", args->settings.gradation,
                     fmt::format("Largest growth of the tet size from one element to the next (default {})",
                                 d.gradation))
-        ->check(in_range(run::kGradationRange));
-    args->threads_option = cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-                               ->check(in_range(run::kThreadsRange));
+        ->check(number_in(run::kGradationRange));
+    args->threads_option = cmd->add_option("--threads", args->threads, "Worker threads (default: all cores; more than the cores are not used)")
+                               ->check(whole_in(run::kThreadsRange));
     cmd->add_option("--tet-parts", args->settings.tet_parts,
                     fmt::format("Spatial parts of the tet step's parallel Delaunay passes (default {}: the mesh is "
                                 "the same for any --threads; 0: one per thread, the mesh then depends on it)",
                                 d.tet_parts))
-        ->check(in_range(run::kTetPartsRange));
+        ->check(whole_in(run::kTetPartsRange));
     cmd->add_option("--tet-relax", args->settings.tet_relax,
                     fmt::format("ODT relaxation rounds of the tet step's interior points before the optimisation "
                                 "(default {}; 0: none, mean collapse about 0.01 lower, time within about 15 % either way)",
                                 d.tet_relax))
-        ->check(in_range(run::kTetRelaxRange));
+        ->check(whole_in(run::kTetRelaxRange));
     args->max_elements_option =
         cmd->add_option("--max-elements", args->max_elements,
                         "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "
                         "volume, area, S, St and tube lengths; default: what this machine's memory holds)")
-            ->check(CLI::PositiveNumber);
+            ->check(positive_number());
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
     cmd->add_option("--html", args->html,
                     "Also write the report as one self-contained HTML page (Table 1, histograms, phase times, a 3D "
                     "view of the hybrid layer around the pipes)");
     args->solid_option = cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
-                             ->check(in_range(run::kSolidRange));
+                             ->check(whole_in(run::kSolidRange));
     cmd->add_option("--until", args->until_name, "Last stage to run: " + run::stage_names() + " (default: the last)")
         ->option_text("STAGE");
     cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");

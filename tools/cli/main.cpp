@@ -2,16 +2,22 @@
 // turns errors into one line on stderr with exit code 2.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <signal.h>
 
 #include <exception>
 #include <vector>
 
 #include "engine/core/types.hpp"
+#include "engine/io/temporary_files.hpp"
 #include "geom/occt_info.hpp"
 #include "tools/cli/commands.hpp"
 
 int main(int argc, char** argv) {
     namespace cli = tubemesh::cli;
+    // Ctrl-C, kill or timeout: remove this run's temporaries. A file-size limit (ulimit -f):
+    // let the write fail with an error that names the file instead of killing the process.
+    tubemesh::io::remove_temporaries_on_signals();
+    signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"tubemesh: conforming hex/pyramid/tet meshes for solids with tubular holes"};
     app.require_subcommand(0, 1);
     bool version = false;

@@ -76,21 +76,10 @@ void write_text(const std::string& path, const std::string& text) {
 
 void write_all(const HybridMesh& mesh, const std::vector<std::string>& meshes, const WriteOptions& options,
                const std::vector<std::pair<std::string, std::string>>& texts) {
-    std::vector<std::string> written;
-    try {
-        for (const std::string& out : meshes) {
-            write_mesh(mesh, out, options);
-            written.push_back(out);
-        }
-        for (const auto& [path, text] : texts) {
-            write_text(path, text);
-            written.push_back(path);
-        }
-    } catch (...) {
-        std::error_code ec;
-        for (const std::string& w : written) std::filesystem::remove(w, ec);
-        throw;
-    }
+    io::CommitGroup group;
+    for (const std::string& out : meshes) write_mesh(mesh, out, options);
+    for (const auto& [path, text] : texts) write_text(path, text);
+    group.commit();
 }
 
 }  // namespace tubemesh::run

@@ -38,8 +38,9 @@ void check_report_output(const std::string& path, const char* extension, const c
 // Written to a temporary name and renamed (engine/io/atomic_file.hpp).
 void write_text(const std::string& path, const std::string& text);
 
-// A run's files, all or none: the mesh to every path in `meshes`, then each text to its path.
-// A failure removes the files this call already wrote and throws on.
+// A run's files, all or none: the mesh to every path in `meshes`, then each text to its path,
+// each complete under a temporary name before any target is replaced (io::CommitGroup), so a
+// failure or an interrupt leaves every target as it was, files that existed before included.
 void write_all(const HybridMesh& mesh, const std::vector<std::string>& meshes, const WriteOptions& options,
                const std::vector<std::pair<std::string, std::string>>& texts);
 

@@ -11,6 +11,7 @@
 #include "engine/io/abaqus_faces.hpp"
 #include "engine/io/abaqus_names.hpp"
 #include "engine/io/abaqus_number.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "engine/io/boundary_cell_faces.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "engine/io/msh_reader.hpp"
@@ -196,6 +197,15 @@ TEST(MshReader, UnknownNodeTagIsAnError) {
     EXPECT_TRUE(contains(message, "line 39: element 9 refers to node tag 31")) << message;
 }
 
+TEST(MshReader, CoordinateThatIsNotANumberIsAnError) {
+    for (const char* bad : {"nan", "inf"}) {
+        std::string text = kGmshStyle;
+        text.replace(text.find("0 1 0 0.25 0.75"), 15, std::string("0 ") + bad + " 0 0.25 0.75");
+        const std::string message = error_of([&] { io::read_msh_bytes(text, "g.msh"); });
+        EXPECT_TRUE(contains(message, "node 10 has a coordinate that is not a finite number")) << message;
+    }
+}
+
 TEST(MshReader, DuplicateElementTagIsAnError) {
     std::string text = kGmshStyle;
     text.replace(text.find("7 40 30"), 7, "100 40 30");
@@ -258,6 +268,38 @@ TEST_P(AtomicWrite, ReplacesAnExistingFile) {
     write_mesh(testing::conforming_patch(), path);
     EXPECT_GT(std::filesystem::file_size(path), 100u);
     EXPECT_EQ(testing::entry_count(dir.path()), 1);
+}
+
+// A group's files appear together: a failure in the second leaves the first target as it was.
+TEST_P(AtomicWrite, GroupFailingAtItsSecondFileKeepsTheFirstTarget) {
+    TempDir dir;
+    const auto first = dir / (std::string("first") + GetParam());
+    testing::write_text(first, "old");
+    HybridMesh broken = testing::conforming_patch();
+    broken.block(CellKind::Tet).nodes[0] = 99;
+    const std::string message = error_of([&] {
+        io::CommitGroup group;
+        write_mesh(testing::conforming_patch(), first);
+        EXPECT_EQ(testing::read_text(first), "old");  // complete, but not renamed yet
+        write_mesh(broken, dir / (std::string("second") + GetParam()));
+        group.commit();
+    });
+    EXPECT_TRUE(contains(message, "refers to node 99")) << message;
+    EXPECT_EQ(testing::read_text(first), "old");
+    EXPECT_EQ(testing::entry_count(dir.path()), 1);
+}
+
+TEST_P(AtomicWrite, GroupRenamesEveryFileAtCommit) {
+    TempDir dir;
+    const auto first = dir / (std::string("first") + GetParam()), second = dir / (std::string("second") + GetParam());
+    testing::write_text(first, "old");
+    io::CommitGroup group;
+    write_mesh(testing::conforming_patch(), first);
+    write_mesh(testing::conforming_patch(), second);
+    EXPECT_FALSE(std::filesystem::exists(second));
+    group.commit();
+    EXPECT_EQ(testing::read_text(first), testing::read_text(second));
+    EXPECT_EQ(testing::entry_count(dir.path()), 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, AtomicWrite, ::testing::Values(".msh", ".vtu", ".inp"),

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -160,7 +161,12 @@ private:
             tags.push_back(tag);
         }
         for (std::uint64_t i = 0; i < n; ++i) {
-            for (int k = 0; k < 3; ++k) xyz.push_back(in_.double_value("a node coordinate"));
+            for (int k = 0; k < 3; ++k) {
+                xyz.push_back(in_.double_value("a node coordinate"));
+                // Otherwise a NaN reaches the check as a "non-positive volume".
+                if (!std::isfinite(xyz.back())) in_.fail("node " + std::to_string(tags[tags.size() - n + i]) +
+                                                         " has a coordinate that is not a finite number");
+            }
             for (int k = 0; k < extra; ++k) in_.double_value("a parametric coordinate");
         }
     }

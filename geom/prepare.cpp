@@ -9,6 +9,7 @@
 
 #include "geom/discretize.hpp"
 #include "geom/face_properties.hpp"
+#include "geom/geometry_diagnosis.hpp"
 #include "geom/sizing_distances.hpp"
 #include "geom/surface_map_occt.hpp"
 
@@ -123,6 +124,7 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
     {
         PhaseProgress progress(options.progress, "tubes", 1);
         p.tubes = find_tubes(model, options.tubes);
+        diagnose_faces(p.tubes);
         progress.finish();
     }
     p.phases.push_back({"tubes", seconds_since(t0),
@@ -136,6 +138,7 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
         PhaseProgress progress(options.progress, "sizes", 1);
         p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
         refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
+        diagnose_clearances(p.tubes, p.plan);
         p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
         progress.finish();
     }

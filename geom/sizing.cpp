@@ -138,6 +138,10 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
     const Clearances c = measure_clearances(model, tubes);
     plan.dc = c.dc;
     plan.dcb = c.dcb;
+    plan.dc_tube_a = c.dc_tube_a;
+    plan.dc_tube_b = c.dc_tube_b;
+    plan.dcb_tube = c.dcb_tube;
+    plan.dcb_face = c.dcb_face;
     apply_rules(plan, c, e);
     apply_guards(plan, c, e);
     if (options.size <= 0 && !plan.changes.empty()) {

@@ -59,6 +59,8 @@ struct SizePlan {
     std::string sweep_source;
     double dc = 0;                      // +inf with fewer than two tubes
     double dcb = 0;                     // +inf when no face other than the hosts exists
+    int dc_tube_a = -1, dc_tube_b = -1; // 0-based tubes attaining dc
+    int dcb_tube = -1, dcb_face = 0;    // the tube attaining dcb and the face it is near
     double rc = 0;                      // +inf when every tube is straight
     std::vector<SizeChange> changes;    // in the order they were made
     std::vector<std::string> warnings;  // what no size can fix (a bend tighter than the tube)

@@ -49,6 +49,7 @@ struct TubeInfo {
 struct TubeRejection {
     std::vector<int> faces;
     std::string reason;
+    int loops = -1;  // the loops bounding the group, when the search got as far as counting them
 };
 
 struct TubeSearch {

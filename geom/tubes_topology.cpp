@@ -72,7 +72,7 @@ double mean_outer_edge_length(const TopologyIndex& index, int face) {
 // Checks the group's boundary against rules 2-6. Returns an empty string and fills `loops`
 // when it is two complete holes of outside faces that pass the length rule.
 std::string check_boundary(const TopologyIndex& index, const std::vector<int>& group, const TubeOptions& options,
-                           std::array<HoleLoop, 2>& loops) {
+                           std::array<HoleLoop, 2>& loops, int& loop_count) {
     const auto inside = [&](int f) { return std::binary_search(group.begin(), group.end(), f); };
     std::set<int> boundary;
     for (int f : group)
@@ -102,6 +102,7 @@ std::string check_boundary(const TopologyIndex& index, const std::vector<int>& g
         }
         if (!found) return "edge " + std::to_string(e) + " on its boundary belongs to no other face (open shell)";
     }
+    loop_count = static_cast<int>(wires.size());
     if (wires.size() != 2) {
         return wires.size() == 1 ? "bounded by one loop (a blind hole or a pocket)"
                                  : "bounded by " + std::to_string(wires.size()) + " loops, a tube has two";
@@ -207,9 +208,10 @@ CandidateSearch find_tube_candidates(const TopologyIndex& index, const TubeOptio
                 continue;
             }
             TubeCandidate c;
-            const std::string why = check_boundary(index, group, options, c.loops);
+            int loop_count = -1;
+            const std::string why = check_boundary(index, group, options, c.loops, loop_count);
             if (!why.empty()) {
-                out.rejected.push_back({group, why});
+                out.rejected.push_back({group, why, loop_count});
                 continue;
             }
             c.faces = std::move(group);

@@ -286,6 +286,7 @@ TEST(GeomBuilders, JsonSpecBuildsAndRoundTrips) {
 TEST(GeomBuilders, JsonSpecErrorsSayWhere) {
     auto msg = [](const std::string& text) { return error_of([&] { parse_block_spec(text, "s.json"); }); };
     EXPECT_NE(msg("{").find("s.json: not valid JSON"), std::string::npos);
+    EXPECT_NE(msg("{\"box\": [1e99999, 1, 1]}").find("s.json: not valid JSON"), std::string::npos);  // number overflow
     EXPECT_NE(msg(R"({"box": [1, 2, 3], "pipes": [], "pipe": 1})").find("unknown key 'pipe'"), std::string::npos);
     EXPECT_NE(msg(R"({"box": [1, 2], "pipes": [{}]})").find("s.json: box: expected [x, y, z]"), std::string::npos);
     EXPECT_NE(msg(R"({"box": [1, 2, 3], "pipes": [{"points": []}]})").find("pipes[0]: missing \"diameter\""),

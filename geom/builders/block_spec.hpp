@@ -34,6 +34,8 @@ struct PipeSpec {
     // Spline only: directions at the first and last point. Default: the host's normal when the
     // point lies on a face (the pipe meets the face at a right angle), else the natural end.
     std::optional<Vec3> start_tangent, end_tangent;
+    // Line only: the hole ends at the second point, inside the host (a drilled blind hole).
+    bool blind = false;
 };
 
 // Every path is extended past its first and last point along its end directions, so that the
@@ -43,6 +45,9 @@ struct BlockSpec {
     std::string length_unit = "model units"; // a label for reports and the STEP file ("metre", ...)
     HostSpec host;
     std::vector<PipeSpec> pipes;
+    // false: skip the clearance checks and build what the pipes make even when they cross,
+    // touch or graze the boundary (test input for the mesher's own diagnosis).
+    bool check_clearance = true;
 };
 
 // What a builder knows about its result, for reports and tests.

@@ -151,7 +151,7 @@ CentreLine line_centre_line(const PipeSpec& pipe, double e, int number) {
     const double len = norm(b - a);
     if (len <= Precision::Confusion()) throw Error(pipe_label(number) + ": the line's two points are the same");
     CentreLine line;
-    line.curve = new Geom_TrimmedCurve(new Geom_Line(to_pnt(a), gp_Dir(to_vec(b - a))), -e, len + e);
+    line.curve = new Geom_TrimmedCurve(new Geom_Line(to_pnt(a), gp_Dir(to_vec(b - a))), -e, pipe.blind ? len : len + e);
     line.exact = true;
     line.extension = e;
     line.path_first = 0;

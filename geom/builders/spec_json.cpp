@@ -40,6 +40,11 @@ Vec3 vec3(const json& j, const std::string& where, const Context& ctx) {
     return {number(j[0], where + "[0]", ctx), number(j[1], where + "[1]", ctx), number(j[2], where + "[2]", ctx)};
 }
 
+bool flag(const json& j, const std::string& where, const Context& ctx) {
+    if (!j.is_boolean()) ctx.fail(where, "expected true or false, got " + j.dump());
+    return j.get<bool>();
+}
+
 std::string text(const json& j, const std::string& where, const Context& ctx) {
     if (!j.is_string()) ctx.fail(where, "expected a string, got " + j.dump());
     return j.get<std::string>();
@@ -67,7 +72,7 @@ const char* path_name(PathKind k) {
 
 PipeSpec pipe_from(const json& j, const std::string& where, const Context& ctx) {
     if (!j.is_object()) ctx.fail(where, "expected an object {\"path\": ..., \"diameter\": ..., \"points\": [...]}");
-    only_keys(j, {"path", "diameter", "points", "bend_radius", "start_tangent", "end_tangent"}, where, ctx);
+    only_keys(j, {"path", "diameter", "points", "bend_radius", "start_tangent", "end_tangent", "blind"}, where, ctx);
     PipeSpec p;
     if (!j.contains("diameter")) ctx.fail(where, "missing \"diameter\"");
     if (!j.contains("points")) ctx.fail(where, "missing \"points\"");
@@ -79,6 +84,8 @@ PipeSpec pipe_from(const json& j, const std::string& where, const Context& ctx) 
     if (j.contains("bend_radius")) p.bend_radius = number(j["bend_radius"], where + ".bend_radius", ctx);
     if (j.contains("start_tangent")) p.start_tangent = vec3(j["start_tangent"], where + ".start_tangent", ctx);
     if (j.contains("end_tangent")) p.end_tangent = vec3(j["end_tangent"], where + ".end_tangent", ctx);
+    if (j.contains("blind")) p.blind = flag(j["blind"], where + ".blind", ctx);
+    if (p.blind && p.kind != PathKind::Line) ctx.fail(where + ".blind", "only a line can be blind");
     return p;
 }
 
@@ -104,11 +111,11 @@ BlockSpec parse_block_spec(const std::string& input, const std::string& source) 
     json j;
     try {
         j = json::parse(input);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number like 1e99999
         ctx.fail("", std::string("not valid JSON (") + e.what() + ")");
     }
     if (!j.is_object()) ctx.fail("", "expected a JSON object with \"box\" or \"cylinder\" and \"pipes\", or \"serpentine\"");
-    only_keys(j, {"name", "unit", "box", "cylinder", "pipes", "serpentine"}, "", ctx);
+    only_keys(j, {"name", "unit", "box", "cylinder", "pipes", "serpentine", "check_clearance"}, "", ctx);
 
     const std::string name = j.contains("name") ? text(j["name"], "name", ctx) : std::filesystem::path(source).stem().string();
     const std::string unit = j.contains("unit") ? text(j["unit"], "unit", ctx) : "model units";
@@ -123,6 +130,7 @@ BlockSpec parse_block_spec(const std::string& input, const std::string& source) 
     BlockSpec spec;
     spec.name = name;
     spec.length_unit = unit;
+    if (j.contains("check_clearance")) spec.check_clearance = flag(j["check_clearance"], "check_clearance", ctx);
     if (j.contains("box") == j.contains("cylinder")) ctx.fail("", "give exactly one of \"box\": [x, y, z] or \"cylinder\"");
     if (j.contains("box")) {
         spec.host.kind = HostSpec::Kind::Box;
@@ -159,6 +167,7 @@ std::string block_spec_json(const BlockSpec& spec) {
     std::string out = "{\n";
     out += "  \"name\": " + ordered(spec.name).dump() + ",\n";
     out += "  \"unit\": " + ordered(spec.length_unit).dump() + ",\n";
+    if (!spec.check_clearance) out += "  \"check_clearance\": false,\n";
     if (spec.host.kind == HostSpec::Kind::Box)
         out += "  \"box\": " + vec(spec.host.size).dump() + ",\n";
     else
@@ -175,6 +184,7 @@ std::string block_spec_json(const BlockSpec& spec) {
         pj["points"] = pts;
         if (p.start_tangent) pj["start_tangent"] = vec(*p.start_tangent);
         if (p.end_tangent) pj["end_tangent"] = vec(*p.end_tangent);
+        if (p.blind) pj["blind"] = true;
         out += "    " + pj.dump() + (i + 1 < spec.pipes.size() ? ",\n" : "\n");
     }
     out += "  ]\n}";

@@ -10,8 +10,10 @@
 //       {"path": "polyline", "diameter": 0.1, "bend_radius": 0.5,
 //        "points": [[0, 4, 1], [3, 4, 1], [3, 4, 3]]},
 //       {"path": "spline", "diameter": 0.1, "points": [[2, 0, 2], [2.5, 2, 2.2], [3, 5, 2]],
-//        "start_tangent": [0, 1, 0]}                      tangents optional
-//     ]
+//        "start_tangent": [0, 1, 0]},                     tangents optional
+//       {"path": "line", "diameter": 0.2, "points": [[2, 2, 0], [2, 2, 1]], "blind": true}
+//     ],
+//     "check_clearance": false             optional; default true
 //   }
 //
 // "path" is one of line, arc (start, a point on the arc, end), polyline (corners rounded with
@@ -20,6 +22,9 @@
 // 0.032, "spacing": 1.5, "bend_radius": 0.75, "end_margin": 1, "inlet": "x-", "outlet": "x-"}}
 // describes a dam lift (every field optional, defaults as shown). Unknown keys are errors, so
 // typos do not pass.
+// A blind line ends at its second point, inside the block (a drilled hole). "check_clearance":
+// false builds pipes that cross, touch or graze the boundary, which the builder otherwise
+// refuses: hostile input for tubemesh's own geometry diagnosis.
 #include <filesystem>
 #include <string>
 

@@ -1,0 +1,67 @@
+// Geometry the hex rings cannot mesh is diagnosed before meshing (geom/geometry_diagnosis.hpp):
+// one line naming the faces or pipes and what to change, exit 2, no file, and no time spent
+// meshing. The solids come from block specs with the builder's clearance checks off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/support/cli_command.hpp"
+#include "tests/support/process.hpp"
+
+namespace {
+
+using tubemesh::testing::cli;
+using tubemesh::testing::q;
+using tubemesh::testing::run_command;
+using tubemesh::testing::TempDir;
+namespace fs = std::filesystem;
+
+struct Case {
+    const char* name;
+    const char* pipes;  // the "pipes" of a 6 x 6 x 6 box, diameter 0.2
+    const char* message;
+};
+
+std::string line(double y0, double z0, double y1, double z1, bool along_y = false) {
+    const std::string a = along_y ? "[3, 0, " : "[0, ";
+    const std::string b = along_y ? "[3, 6, " : "[6, ";
+    return R"({"path": "line", "diameter": 0.2, "points": [)" + a + (along_y ? "" : std::to_string(y0) + ", ") +
+           std::to_string(z0) + "], " + b + (along_y ? "" : std::to_string(y1) + ", ") + std::to_string(z1) + "]]}";
+}
+
+class CliMeshGeometry : public ::testing::TestWithParam<Case> {};
+
+TEST_P(CliMeshGeometry, IsDiagnosedBeforeMeshing) {
+    const Case& c = GetParam();
+    TempDir dir;
+    std::ofstream(dir / "spec.json") << R"({"check_clearance": false, "box": [6, 6, 6], "pipes": [)" << c.pipes
+                                     << "]}";
+    ASSERT_EQ(run_command(cli() + " make-block --spec " + q(dir / "spec.json") + " -o " + q(dir / "in.step")).exit_code,
+              0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "in.step") + " -o " + q(dir / "out.msh"));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << "want '" << c.message << "' in: " << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.msh"));
+}
+
+const std::string kAlongX = line(3, 3, 3, 3);
+const std::string kCrossing = kAlongX + ", " + line(0, 3, 0, 3, true);
+const std::string kTouching = kAlongX + ", " + line(0, 3.2, 0, 3.2, true);
+const std::string kTangent = line(3, 0.1, 3, 0.1);
+const std::string kGrazing = line(3, 0.101, 3, 0.101);
+const std::string kClose = kAlongX + ", " + line(3, 3.21, 3, 3.21);
+
+INSTANTIATE_TEST_SUITE_P(
+    Rows, CliMeshGeometry,
+    ::testing::Values(Case{"crossing", kCrossing.c_str(), "faces 6, 8, 9, 10 are pipe walls that meet each other"},
+                      Case{"touching", kTouching.c_str(), "come within"},
+                      Case{"tangent", kTangent.c_str(), "a pipe wall touches a face tangentially"},
+                      Case{"grazing", kGrazing.c_str(), "pipe 1 (wall face 6) passes 0.001 from face 4"},
+                      Case{"close", kClose.c_str(), "come within 0.01 of each other"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Builds and runs the fast tests under AddressSanitizer + UBSan, and the parallel kernels'
+# tests (Delaunay, tet step, sweep, pyramids) under ThreadSanitizer:
+#   tools/check-sanitizers.sh [asan|tsan|all]   (default all; CI runs asan)
+# Any sanitizer report fails the run (exit 1).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+which=${1:-all}
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
+
+# The engine's unit suites: seconds each in a Release build, no OpenCASCADE.
+asan_tests=(test_mesh_store test_quality test_sweep test_mesh_check test_mesh_io test_pyramids test_delaunay
+            test_surface test_predicates test_tets_optimise test_tets_ring_triangulation test_tets_recovery
+            test_tets_refine test_tets_relaxation)
+# The kernels that run in parallel: Delaunay passes, tet refinement and relaxation, recovery,
+# the sweep (its determinism tests run it on several threads), the pyramid batches.
+tsan_tests=(test_delaunay test_tets_refine test_tets_relaxation test_tets_recovery test_sweep test_pyramids)
+
+run_suite() {  # preset, tests...
+  local preset=$1
+  shift
+  [[ -f build/$preset/build.ninja ]] || cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" -j "$(nproc)" --target "$@" >/dev/null
+  local failed=0
+  for t in "$@"; do
+    local log=build/$preset/sanitizer-$t.txt
+    local t0=$SECONDS
+    if build/"$preset"/tests/"$t" --gtest_brief=1 >"$log" 2>&1; then
+      echo "$preset $t: clean ($((SECONDS - t0)) s)"
+    else
+      echo "$preset $t: FAILED ($((SECONDS - t0)) s), see $log" >&2
+      failed=1
+    fi
+  done
+  return $failed
+}
+
+status=0
+if [[ $which == asan || $which == all ]]; then
+  # halt_on_error: the first report fails the suite; UBSan reports are errors too.
+  ASAN_OPTIONS=detect_leaks=1:halt_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+    run_suite asan "${asan_tests[@]}" || status=1
+fi
+if [[ $which == tsan || $which == all ]]; then
+  TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" run_suite tsan "${tsan_tests[@]}" || status=1
+fi
+exit $status

@@ -17,6 +17,8 @@ packages=(
   python3 python3-gmsh python3-meshio python3-numpy python3-vtk9 calculix-ccx python3-pytest
   # the HTML report in a browser: headless Chromium, screenshots read with Pillow
   chromium python3-pil
+  # fuzzing (libFuzzer) and the interrupt tests' file-size limit (prlimit)
+  clang libclang-rt-14-dev util-linux
   # benchmark peers
   gmsh tetgen valgrind time
 )

@@ -29,13 +29,7 @@ TopoDS_Shape box(double x0, double dx) { return BRepPrimAPI_MakeBox(gp_Pnt(x0, 0
 class CliMeshErrors : public ::testing::Test {
 protected:
     TempDir dir;
-    fs::path pipe() {
-        const fs::path p = dir / "pipe.step";
-        if (!fs::exists(p)) {
-            EXPECT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(p)).exit_code, 0);
-        }
-        return p;
-    }
+    fs::path pipe() { return tubemesh::testing::built_preset(dir.path(), "straight-pipe"); }
     // Runs `mesh IN -o out.msh --report out.json ARGS` and checks the common contract.
     void expect_error(const std::string& in, const std::string& args, const std::string& message,
                       const fs::path& output = {}) {

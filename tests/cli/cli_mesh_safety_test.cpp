@@ -77,13 +77,7 @@ TEST(CliMeshOptions, TooManyNodesAroundNamesCirc) {
 class CliMeshSafety : public ::testing::Test {
 protected:
     TempDir dir;
-    fs::path pipe() {
-        const fs::path p = dir / "pipe.step";
-        if (!fs::exists(p)) {
-            EXPECT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(p)).exit_code, 0);
-        }
-        return p;
-    }
+    fs::path pipe() { return tubemesh::testing::built_preset(dir.path(), "straight-pipe"); }
 };
 
 // A disk that fills at the third output (a file-size limit between the sizes of the outputs):

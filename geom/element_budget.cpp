@@ -56,6 +56,8 @@ ElementEstimate estimate_elements(double volume, double area, const std::vector<
         e.pyramids += quads;
         e.hexes += quads * o.radial_layers;
     }
+    // The tets that grade from the pyramids' apexes up to S come on top of the volume's.
+    e.tets += kTetsPerRingQuadAtLeast * e.pyramids;
     return e;
 }
 

@@ -12,6 +12,8 @@
 //   tets       >= V / (0.3 S^3)    a tet's mean edge is at most 1.3 h <= 1.3 S after refinement
 //                                  (regular tet of edge 1.3 S: 0.26 S^3); 8.1 per S^3 measured on
 //                                  a uniform box, more near tubes
+//              + 8 per ring quad   the tets grading from the pyramid layer up to S; 20-96 per
+//                                  quad measured on the presets, 9.8 on two pipes 0.01 apart
 //   triangles  >= A / S^2          faces other than tube walls; 2.3 per S^2 measured on a box
 //   hexes      >= n L (floor(len / step) - 1), pyramids a 1/L of it: the ring's axial step
 //                                  (engine/sweep/ring_dimensions.hpp) at the tube's largest radius;
@@ -27,6 +29,10 @@ namespace tubemesh::geom {
 // The fewest bytes per element at peak memory measured on the reference cases (185-501,
 // README "Performance"), rounded down: the budget's memory figure.
 inline constexpr double kBytesPerElementAtLeast = 150;
+
+// The fewest tets per ring quad (pyramid) beyond the volume's V / (0.3 S^3), rounded down from
+// the measurements above: a thin ring asks for millions of tets around it, not the 1e4 of V.
+inline constexpr double kTetsPerRingQuadAtLeast = 8;
 
 struct ElementBudget {
     // Refuse a run whose lower bound exceeds this many elements. 0 (default): what this

@@ -43,26 +43,27 @@ void diagnose_faces(const TubeSearch& tubes) {
 void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
     if (tubes.tubes.empty()) return;
     auto radius = [&](int t) { return tubes.tubes[static_cast<std::size_t>(t)].radius_min; };
-    // The face blames itself when it is nearer than the other pipe, in the guards' terms: a
-    // ring and its pyramids take 3.2 St towards a face and 4.2 St between two pipes.
-    const bool face_binds = plan.dcb / 3.2 <= plan.dc / 4.2;
-    if (face_binds && plan.dcb_tube >= 0 && plan.sweep_size < kThinnestRing * radius(plan.dcb_tube))
+    // The thickest ring the distances allow, whatever St was asked for: a ring and its
+    // pyramids take 3.2 St towards a face and 4.2 St between two pipes (sizing's guards).
+    const double by_face = plan.dcb / 3.2, by_pipes = plan.dc / 4.2;
+    if (by_face <= by_pipes && plan.dcb_tube >= 0 && by_face < kThinnestRing * radius(plan.dcb_tube)) {
+        const double r = radius(plan.dcb_tube);
         throw Error(fmt::format(
             "{} passes {:.3g} from face {} ({:.2g} of its radius {:.3g}){}: a hex ring that fits there would be "
-            "{:.3g} thick, under {} of the radius, and take millions of elements; move the pipe at least {:.3g} "
-            "away from face {}",
-            pipe(tubes, plan.dcb_tube), plan.dcb, plan.dcb_face, plan.dcb / radius(plan.dcb_tube),
-            radius(plan.dcb_tube), plan.dcb <= 1e-6 * radius(plan.dcb_tube) ? " - it touches the face" : "",
-            plan.sweep_size, kThinnestRing, 0.2 * radius(plan.dcb_tube), plan.dcb_face));
-    if (!face_binds && plan.dc_tube_a >= 0) {
+            "under {:.3g} thick, less than {} of the radius, and take millions of elements; move the pipe at least "
+            "{:.3g} away from face {}",
+            pipe(tubes, plan.dcb_tube), plan.dcb, plan.dcb_face, plan.dcb / r, r,
+            plan.dcb <= 1e-6 * r ? " - it touches the face" : "", by_face, kThinnestRing, 0.2 * r, plan.dcb_face));
+    }
+    if (by_pipes < by_face && plan.dc_tube_a >= 0) {
         const double r = std::min(radius(plan.dc_tube_a), radius(plan.dc_tube_b));
-        if (plan.sweep_size < kThinnestRing * r)
+        if (by_pipes < kThinnestRing * r)
             throw Error(fmt::format(
                 "{} and {} come within {:.3g} of each other ({:.2g} of the radius {:.3g}){}: hex rings that fit "
-                "between them would be {:.3g} thick, under {} of the radius, and take millions of elements; "
-                "keep the walls at least {:.3g} apart",
+                "between them would be under {:.3g} thick, less than {} of the radius, and take millions of "
+                "elements; keep the walls at least {:.3g} apart",
                 pipe(tubes, plan.dc_tube_a), pipe(tubes, plan.dc_tube_b), plan.dc, plan.dc / r, r,
-                plan.dc <= 1e-6 * r ? " - they touch" : "", plan.sweep_size, kThinnestRing, 0.25 * r));
+                plan.dc <= 1e-6 * r ? " - they touch" : "", by_pipes, kThinnestRing, 0.25 * r));
     }
 }
 

@@ -11,14 +11,15 @@
 namespace tubemesh::geom {
 
 // The thinnest ring accepted, as a fraction of the pipe's radius. The random blocks keep
-// pipes half a diameter apart and a tenth of one from the faces: their rings are 0.0625 r at
-// the thinnest, so none of them is refused.
+// pipes half a diameter apart and a tenth of one from the faces: the room for their rings is
+// 0.0625 r at the least, so none of them is refused.
 inline constexpr double kThinnestRing = 0.05;
 
 // Throws for walls that meet or a wall tangent to a face (from the tube search's rejections).
 void diagnose_faces(const TubeSearch& tubes);
 
-// Throws when the plan's St is below kThinnestRing of the radius of a tube a rule cut it for.
+// Throws when the distances (Dc, Dcb) leave room only for a ring thinner than kThinnestRing of
+// the radius of the pipe concerned, whatever St the user asked for.
 void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan);
 
 }  // namespace tubemesh::geom

@@ -145,6 +145,16 @@ void interrupt_while_writing(const fs::path& dir, int signal_number) {
     EXPECT_EQ(read_file(dir / "y.vtu"), earlier);
 }
 
+// A run that outgrows its memory (here a 160 MiB address-space limit on a 210 MB run) ends
+// with a message, exit 2 and no file, not with the kernel's out-of-memory killer.
+TEST_F(CliMeshSafety, OutOfMemoryEndsWithAMessage) {
+    const auto r = run_command("prlimit --as=" + std::to_string(160 << 20) + " " + cli() + " mesh --threads 2 --size 0.25 -o " +
+                               q(dir / "out.msh"));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("tubemesh: out of memory: the run needed more than the 0.156 GiB", 0), 0u) << r.err;
+    EXPECT_TRUE(names_in(dir.path()).empty());
+}
+
 TEST_F(CliMeshSafety, SigtermWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGTERM); }
 TEST_F(CliMeshSafety, SigintWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGINT); }
 TEST_F(CliMeshSafety, SighupWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGHUP); }

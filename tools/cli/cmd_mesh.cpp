@@ -15,12 +15,15 @@
 
 #include <optional>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "engine/io/mesh_io.hpp"
+#include "geom/element_budget.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
+#include "tools/cli/memory_limit.hpp"
 #include "tools/cli/option_checks.hpp"
 #include "tools/cli/progress_line.hpp"
 #include "tools/run/html_report.hpp"
@@ -187,6 +190,9 @@ Command add_mesh_command(CLI::App& app) {
             if (!args->quiet) fmt::print("{}\n", s);
         };
 
+        // 90 % of the physical memory, or a lower limit already set (ulimit -v): the element
+        // budget refuses most runs that would not fit; this stops the rest with a message.
+        const double memory_limit = limit_memory(0.9 * geom::physical_memory_bytes());
         geom::MeshRun meshed;
         try {
             if (args->input.empty()) {
@@ -196,6 +202,12 @@ Command add_mesh_command(CLI::App& app) {
                 meshed = geom::mesh_file(args->input, options,
                                       {.solid = args->settings.solid.value_or(0), .until = until});
             }
+        } catch (const std::bad_alloc&) {
+            progress.close();
+            throw Error(fmt::format("out of memory: the run needed more than the {:.3g} GiB this process may use; give a "
+                                    "larger --size or --sweep-size, or a smaller --max-elements to be refused before "
+                                    "meshing",
+                                    memory_limit / (1024.0 * 1024 * 1024)));
         } catch (...) {
             progress.close();
             throw;

@@ -74,6 +74,17 @@ TEST(CliMeshOptions, TooManyNodesAroundNamesCirc) {
     EXPECT_EQ(r.err.find("default: default:"), std::string::npos) << r.err;
 }
 
+// Hexes past the analysis limit are not silent: the warning names the layers as the cause.
+TEST(CliMeshOptions, ManyLayersWarnOfThinHexes) {
+    TempDir dir;
+    const auto r = run_command(cli() + " mesh --layers 6 -o " + q(dir / "out.msh"));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("tubemesh: warning: the worst hexahedron has condition number"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("with 6 layers across a ring"), std::string::npos) << r.err;
+    const auto two = run_command(cli() + " mesh --layers 2 -o " + q(dir / "out.msh"));
+    EXPECT_EQ(two.err.find("hexahedron"), std::string::npos) << two.err;
+}
+
 class CliMeshSafety : public ::testing::Test {
 protected:
     TempDir dir;

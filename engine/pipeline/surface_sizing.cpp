@@ -3,6 +3,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "engine/pipeline/curvature_sizes.hpp"
 #include "engine/surface/face_boundaries.hpp"
 
 namespace tubemesh {
@@ -26,6 +27,9 @@ SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> 
     for (const TubeRing& ring : rings)
         for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, ring_sources);
     ring_sources.insert(ring_sources.end(), caps.begin(), caps.end());
+    for (const PipelineFace& f : in.faces)
+        if (!(f.tube_wall || walls.count(f.id)))
+            if (const SurfaceMap* map = in.surfaces(f.id)) add_curvature_sources(*map, g.size, ring_sources);
     // geom cut the B-rep edges at S (finer where they curve); where the rings or caps ask for less they
     // are cut again, on the first face (in id order) that uses them. Then the edges' own short
     // segments (curved or short edges) become sources too, so the faces grade from them.

@@ -64,4 +64,21 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"close", kClose.c_str(), "come within 0.01 of each other"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// Blind holes are no tubes: all tets, with the holes' walls meshed from their own radius even
+// when S is larger than the holes (S = 0.5 and 1 failed in boundary recovery before).
+TEST(CliMeshGeometryHoles, BlindHolesLargerSizeThanTheHoleMeshAndCheck) {
+    TempDir dir;
+    std::ofstream(dir / "spec.json")
+        << R"({"box": [4, 4, 2], "pipes": [{"path": "line", "diameter": 0.2, "points": [[2, 2, 0], [2, 2, 1]], "blind": true},
+               {"path": "line", "diameter": 0.1, "points": [[1, 1, 0], [1, 1, 1.5]], "blind": true}]})";
+    ASSERT_EQ(run_command(cli() + " make-block --spec " + q(dir / "spec.json") + " -o " + q(dir / "in.step")).exit_code,
+              0);
+    for (const char* size : {"0.5", "1"}) {
+        const auto r = run_command(cli() + " mesh " + q(dir / "in.step") + " --size " + size + " -o " + q(dir / "out.msh"));
+        EXPECT_EQ(r.exit_code, 0) << size << ": " << r.err;
+        EXPECT_NE(r.err.find("no tubular hole found"), std::string::npos) << r.err;
+        EXPECT_EQ(run_command(cli() + " check " + q(dir / "out.msh")).exit_code, 0) << size;
+    }
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
+#include <Precision.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
@@ -143,6 +144,8 @@ std::optional<double> removed_volume(const PipeSpec& pipe, const CentreLine& lin
     return kPi * r * r * *len;
 }
 
+const double kSmallestLength = 1000 * Precision::Confusion();
+
 void check_clearances(const BlockSpec& spec, const std::vector<CentreLine>& lines) {
     std::vector<PipeSamples> samples;
     double min_d = Clearance::kNone;
@@ -166,6 +169,14 @@ void check_clearances(const BlockSpec& spec, const std::vector<CentreLine>& line
 }  // namespace
 
 BuiltBlock build_block(const BlockSpec& spec) {
+    // OpenCASCADE's tolerances are absolute (1e-7): below a thousand times that, booleans and
+    // sweeps fail in ways that say nothing about the cause.
+    const double smallest = kSmallestLength;
+    for (std::size_t i = 0; i < spec.pipes.size(); ++i)
+        if (spec.pipes[i].diameter > 0 && spec.pipes[i].diameter < smallest)
+            throw Error(label(static_cast<int>(i)) + ": its diameter " + num(spec.pipes[i].diameter) + " is below " +
+                        num(smallest) + ", too small for OpenCASCADE's fixed tolerance of " +
+                        num(Precision::Confusion()) + ": give the spec in a smaller unit (micrometres, say)");
     try {
         const TopoDS_Solid host = make_host(spec.host);
 

@@ -10,9 +10,9 @@
 
 namespace tubemesh::geom {
 
-// The thinnest ring accepted, as a fraction of the pipe's radius. The random blocks keep
-// pipes half a diameter apart and a tenth of one from the faces: the room for their rings is
-// 0.0625 r at the least, so none of them is refused.
+// The thinnest ring accepted, as a fraction of the pipe's radius. The block builder's clearance
+// checks keep pipes half a diameter apart and a tenth of one from the faces (the random blocks
+// 3 and 2 diameters): the room for their rings is 0.0625 r at the least, so none is refused.
 inline constexpr double kThinnestRing = 0.05;
 
 // Throws for walls that meet or a wall tangent to a face (from the tube search's rejections).

@@ -13,6 +13,7 @@ namespace tubemesh::geom {
 struct MakeBlockArgs {
     std::string preset;
     std::optional<std::uint64_t> seed;
+    bool close = false;  // with seed: close_block_spec (pipes near each other and a face)
     std::filesystem::path spec;
 };
 

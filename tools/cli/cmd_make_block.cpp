@@ -51,6 +51,9 @@ Command add_make_block_command(CLI::App& app) {
     preset->excludes(seed)->excludes(spec);
     seed->excludes(spec);
     cmd->add_option("-o,--output", opt->output, "The STEP file to write");
+    cmd->add_flag("--close", opt->block.close,
+                  "With --seed: two straight pipes deliberately close to each other and to a face (or crossing, "
+                  "touching, tangent), clearance checks off");
     cmd->add_flag("--list", opt->list, "List the presets and exit");
     cmd->add_flag("--print-spec", opt->print_spec, "Print the block's JSON spec to stdout");
     cmd->footer(preset_help());

@@ -184,6 +184,9 @@ TEST(GeomBuilders, SerpentineParametersAreChecked) {
     p.bend_radius = 1.0;
     EXPECT_NE(error_of([&] { serpentine_spec(p); }).find("at most half the spacing"), std::string::npos);
     p.bend_radius = 0.75;
+    p.size = {20, 555555, 3};  // found by the fuzzer: 370,000 runs
+    EXPECT_NE(error_of([&] { serpentine_spec(p); }).find("makes more than 1000 runs"), std::string::npos);
+    p.bend_radius = 0.75;
     p.inlet = p.outlet = "z-";
     EXPECT_NE(error_of([&] { serpentine_spec(p); }).find("not a side face"), std::string::npos);
 }

@@ -36,7 +36,13 @@ BlockSpec serpentine_spec(const SerpentineParams& p, const std::string& name) {
 
     const double along = in.axis == 0 ? p.size.x : p.size.y;   // run direction
     const double across = in.axis == 0 ? p.size.y : p.size.x;  // runs spread this way
-    int runs = static_cast<int>(std::floor((across - p.spacing) / p.spacing + 1e-9)) + 1;
+    const double fitting = std::floor((across - p.spacing) / p.spacing + 1e-9) + 1;
+    // Far more than any dam lift (the preset has 9); also keeps the count an int.
+    constexpr int kMaxRuns = 1000;
+    if (fitting > kMaxRuns)
+        throw Error("serpentine: " + std::to_string(across) + " across at a spacing of " + std::to_string(p.spacing) +
+                    " makes more than " + std::to_string(kMaxRuns) + " runs; give a larger spacing or a smaller lift");
+    int runs = static_cast<int>(fitting);
     const bool same_face = in.plus == out.plus;
     if ((runs % 2 == 0) != same_face) --runs;
     if (runs < (same_face ? 2 : 1))

@@ -14,9 +14,9 @@ namespace tubemesh {
 // A triangle edge then turns by at most about half a radian along the face.
 inline constexpr double kCurvatureSize = 0.5;
 
-// Appends a source at each point of a 17 x 17 grid over the face's parameter box where the
+// Appends a source at each point of a 9 x 9 grid over the face's parameter box where the
 // face's curvature asks for less than `max_size` (the normal's turn over a grid step, a
-// finite-difference estimate). Plane faces add nothing.
+// finite-difference estimate). A face with one normal on a 3 x 3 grid (a plane) adds nothing.
 void add_curvature_sources(const SurfaceMap& map, double max_size, std::vector<SizeSource>& out);
 
 }  // namespace tubemesh

@@ -27,7 +27,7 @@ def test_bad_options_name_the_keyword():
         tubemesh.mesh("paper-ex3", size=-1)
     with pytest.raises(tubemesh.Error, match="^contradictory sizes: sweep_size 50 must be smaller than size 40$"):
         tubemesh.mesh("paper-ex3", size=40, sweep_size=50)
-    with pytest.raises(tubemesh.Error, match="^circ must be between 3 and 4096, got 2$"):
+    with pytest.raises(tubemesh.Error, match="^circ must be between 4 and 4096, got 2$"):
         tubemesh.mesh("paper-ex3", circ=2)
     with pytest.raises(tubemesh.Error, match="^until nope: no such stage"):
         tubemesh.mesh("paper-ex3", until="nope")

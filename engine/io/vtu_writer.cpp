@@ -244,12 +244,13 @@ private:
     void field_data() {
         if (grid_.fields.empty()) return;
         out_.write("    <FieldData>\n");
-        for (const auto& [name, value] : grid_.fields)
+        // A plain pair, not a structured binding: clang 14 (the fuzz build) cannot capture those.
+        for (const auto& field : grid_.fields)
             data_array(
-                "Int32", name, 1, 8,
+                "Int32", field.first, 1, 8,
                 [&](Base64Writer& b) {
-                    b.put(value[0]);
-                    b.put(value[1]);
+                    b.put(field.second[0]);
+                    b.put(field.second[1]);
                 },
                 2);
         out_.write("    </FieldData>\n");

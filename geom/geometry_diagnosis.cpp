@@ -23,7 +23,7 @@ std::string pipe(const TubeSearch& tubes, int t) {
 
 }  // namespace
 
-void diagnose_faces(const TubeSearch& tubes) {
+void diagnose_faces(const TubeSearch& tubes, int face_count) {
     for (const TubeRejection& r : tubes.rejected) {
         if (r.faces.empty()) continue;
         if (r.loops > 2)
@@ -32,10 +32,15 @@ void diagnose_faces(const TubeSearch& tubes) {
                 "touch cannot get hex rings; move them apart (at least a tenth of a diameter between the walls) or "
                 "join them into one pipe in the CAD model",
                 face_list(r.faces), r.loops));
-        if (r.loops == 0)
+        // No open end, or one (another pipe's hole) in a group holding most of the solid: the
+        // smooth flood from a hole ran along a wall into the host's faces, so a wall is tangent
+        // to one of them. A blind hole's group is its wall and bottom only.
+        const bool most_faces = r.faces.size() >= 3 && 2 * r.faces.size() > static_cast<std::size_t>(face_count);
+        if (r.loops == 0 || (r.loops == 1 && most_faces))
             throw Error(fmt::format(
-                "faces {} join smoothly into one group with no open end: a pipe wall touches a face tangentially "
-                "(along a line, not across a hole); move the pipe off the face, at least a tenth of its diameter",
+                "faces {} join smoothly into one group that runs from a pipe wall into the host's faces: a pipe "
+                "wall touches a face tangentially (along a line, not across a hole); move the pipe off the face, at "
+                "least a tenth of its diameter",
                 face_list(r.faces)));
     }
 }

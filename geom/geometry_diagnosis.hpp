@@ -15,8 +15,9 @@ namespace tubemesh::geom {
 // 3 and 2 diameters): the room for their rings is 0.0625 r at the least, so none is refused.
 inline constexpr double kThinnestRing = 0.05;
 
-// Throws for walls that meet or a wall tangent to a face (from the tube search's rejections).
-void diagnose_faces(const TubeSearch& tubes);
+// Throws for walls that meet or a wall tangent to a face (from the tube search's rejections of
+// a solid with `face_count` faces).
+void diagnose_faces(const TubeSearch& tubes, int face_count);
 
 // Throws when the distances (Dc, Dcb) leave room only for a ring thinner than kThinnestRing of
 // the radius of the pipe concerned, whatever St the user asked for.

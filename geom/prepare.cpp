@@ -124,7 +124,7 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
     {
         PhaseProgress progress(options.progress, "tubes", 1);
         p.tubes = find_tubes(model, options.tubes);
-        diagnose_faces(p.tubes);
+        diagnose_faces(p.tubes, model.face_count());
         progress.finish();
     }
     p.phases.push_back({"tubes", seconds_since(t0),

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Sets up, builds (Release) and runs every test through ctest. Tests labelled "heavy" are
-# skipped here; run them with: ctest --test-dir build/release -L heavy
+# Sets up, builds (Release) and runs every test through ctest, the ASan + UBSan suites and a
+# short fuzzing run included (label "sanitizers"). Tests labelled "heavy" are skipped here; run
+# them with: ctest --test-dir build/release -L heavy
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/setup.sh

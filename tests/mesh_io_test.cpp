@@ -358,6 +358,24 @@ TEST(VtmWriter, FailureLeavesNothingItMade) {
     EXPECT_EQ(testing::entry_count(dir.path()), 2);
 }
 
+// In a group of outputs that fails later (destroyed uncommitted), the .vtm's folder goes with
+// its files; committed, all of it stays.
+TEST(VtmWriter, InAGroupItsFolderGoesWithItsFiles) {
+    TempDir dir;
+    {
+        io::CommitGroup group;
+        write_vtm(testing::conforming_patch(), dir / "m.vtm");
+    }
+    EXPECT_EQ(testing::entry_count(dir.path()), 0);
+    {
+        io::CommitGroup group;
+        write_vtm(testing::conforming_patch(), dir / "m.vtm");
+        group.commit();
+    }
+    EXPECT_EQ(testing::entry_count(dir.path()), 2);
+    EXPECT_GT(testing::entry_count(dir / "m"), 3);
+}
+
 // The multiblock names one block per region and per surface group; each file holds exactly
 // its group's elements and the points they use.
 TEST(VtmWriter, OneNamedBlockPerGroup) {

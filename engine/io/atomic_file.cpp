@@ -130,6 +130,11 @@ CommitGroup::CommitGroup() : outer_(std::exchange(current_group, this)) {}
 CommitGroup::~CommitGroup() {
     current_group = outer_;
     for (Pending& p : pending_) ::unlink(p.temporary.c_str());
+    for (auto f = folders_.rbegin(); f != folders_.rend(); ++f) ::rmdir(f->c_str());  // only if empty
+}
+
+void CommitGroup::folder_made(const std::filesystem::path& folder) {
+    if (current_group) current_group->folders_.push_back(folder);
 }
 
 void CommitGroup::commit() {
@@ -145,6 +150,7 @@ void CommitGroup::commit() {
         pending_[i].tracked.release();
     }
     pending_.clear();
+    folders_.clear();
 }
 
 }  // namespace tubemesh::io

@@ -83,6 +83,10 @@ public:
 
     void commit();
 
+    // A folder a writer made for its files (the .vtm's blocks): the current group, if any,
+    // removes it again when it is destroyed uncommitted and the folder is empty.
+    static void folder_made(const std::filesystem::path& folder);
+
 private:
     friend class AtomicFile;
     struct Pending {
@@ -90,6 +94,7 @@ private:
         TrackedTemporary tracked;
     };
     std::vector<Pending> pending_;
+    std::vector<std::filesystem::path> folders_;
     CommitGroup* outer_;
 };
 

@@ -415,6 +415,7 @@ void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const 
     if (ec || !fs::is_directory(dir))
         throw Error("cannot write '" + path.string() + "': cannot create the folder '" + dir.string() + "' for its blocks" +
                     (ec ? ": " + ec.message() : std::string(": a file of that name is in the way")));
+    if (made) io::CommitGroup::folder_made(dir);
     try {
         // Every block complete under a temporary name before any is renamed into place.
         std::vector<std::unique_ptr<io::AtomicFile>> files;

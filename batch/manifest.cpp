@@ -22,8 +22,15 @@ void only_keys(const nlohmann::json& o, std::initializer_list<const char*> keys,
     }
 }
 
+// Only regular files are read: a manifest naming /dev/zero or a FIFO must not hang the run.
+bool regular_file(const fs::path& path) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+
 // The file's hash, or a hash that says it could not be read (the block then fails alone).
 std::string file_hash(const fs::path& path) {
+    if (!regular_file(path)) return sha256_hex("unreadable: " + path.string());
     try {
         return sha256_file(path);
     } catch (const Error&) {
@@ -53,8 +60,8 @@ BlockEntry read_block(const nlohmann::json& b, int position, const fs::path& fol
         const fs::path spec = fs::absolute(folder / b["spec"].get<std::string>()).lexically_normal();
         e.spec_source = spec.string();
         try {
-            e.spec_text = io::read_file_bytes(spec);
-        } catch (const Error& error) {
+            if (regular_file(spec)) e.spec_text = io::read_file_bytes(spec);
+        } catch (const Error&) {
             e.spec_text.clear();  // the worker reports the missing file as this block's failure
         }
         e.input_hash = e.spec_text.empty() ? file_hash(spec) : sha256_hex(e.spec_text);
@@ -74,11 +81,15 @@ BlockEntry read_block(const nlohmann::json& b, int position, const fs::path& fol
 }  // namespace
 
 Manifest read_manifest(const fs::path& path, const nlohmann::json& overrides) {
+    return parse_manifest(io::read_file_bytes(path), path, overrides);
+}
+
+Manifest parse_manifest(const std::string& text, const fs::path& path, const nlohmann::json& overrides) {
     const std::string file = path.string();
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(io::read_file_bytes(path));
-    } catch (const nlohmann::json::parse_error& e) {
+        j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for 1e99999
         throw Error("manifest '" + file + "' is not valid JSON: " + e.what());
     }
     if (!j.is_object()) throw Error("manifest '" + file + "' must hold a JSON object");

@@ -49,4 +49,8 @@ struct Manifest {
 // fails when it is meshed.
 Manifest read_manifest(const std::filesystem::path& path, const nlohmann::json& overrides = nullptr);
 
+// The same from the manifest's text; `path` names it in messages and anchors relative paths.
+Manifest parse_manifest(const std::string& text, const std::filesystem::path& path,
+                        const nlohmann::json& overrides = nullptr);
+
 }  // namespace tubemesh::batch

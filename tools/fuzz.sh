@@ -3,7 +3,7 @@
 #   tools/fuzz.sh [SECONDS] [HARNESS...]        explore for SECONDS each (default 60)
 #   tools/fuzz.sh --runs N [HARNESS...]         N inputs each from seed 1: the same inputs every
 #                                               time, so a CI failure is a real, replayable finding
-# Harnesses: msh_reader, block_spec. The committed seed corpus (fuzz/corpus/NAME) is read, never
+# Harnesses: msh_reader, block_spec, batch_manifest. The committed seed corpus (fuzz/corpus/NAME) is read, never
 # written: new inputs go to build/fuzz/corpus-NAME, findings to build/fuzz/findings-NAME.
 # Exit 1 on any finding.
 set -euo pipefail
@@ -16,7 +16,7 @@ elif [[ ${1:-} =~ ^[0-9]+$ ]]; then
   budget=(-max_total_time="$1"); shift
 fi
 harnesses=("$@")
-[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(msh_reader block_spec)
+[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(msh_reader block_spec batch_manifest)
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is missing (tools/setup.sh installs it)" >&2; exit 2; }
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 [[ -f build/fuzz/build.ninja ]] || cmake --preset fuzz >/dev/null

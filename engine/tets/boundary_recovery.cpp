@@ -184,11 +184,12 @@ private:
                 cands.push_back(e);
             }
             // The edge's midpoint moved the fraction t towards each ring point.
+            const index_t ep = p, eq = q;  // a lambda may not capture structured bindings (clang 14)
             const auto towards_ring = [&](double t) {
                 for (index_t r : ring) {
                     std::array<double, 3> e;
                     for (int k = 0; k < 3; ++k) {
-                        const double mid = 0.5 * (m_.point(p)[k] + m_.point(q)[k]);
+                        const double mid = 0.5 * (m_.point(ep)[k] + m_.point(eq)[k]);
                         e[k] = mid + t * (m_.point(r)[k] - mid);
                     }
                     cands.push_back(e);

@@ -165,6 +165,24 @@ TEST(CliBatch, ACorruptBlockFailsAloneWithItsErrorAndExitOne) {
     EXPECT_NE(status.out.find("3 done, 1 failed"), std::string::npos) << status.out;
 }
 
+TEST(CliBatch, ADeviceNamedAsABlockInputFailsThatBlockAndHangsNothing) {
+    const SmallDam dam;
+    json m = json::parse(read_text(dam.manifest()));
+    m["blocks"][0]["cad"] = "/dev/zero";
+    m["blocks"][1].erase("cad");
+    m["blocks"][1]["spec"] = "/dev/zero";
+    std::ofstream(dam.manifest()) << m.dump(2);
+    const ProcessResult r = batch(dam, "out", "");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    for (const Row& row : catalogue_rows(dam.dir / "out")) {
+        const bool bad = row.at("id") == m["blocks"][0]["id"] || row.at("id") == m["blocks"][1]["id"];
+        EXPECT_EQ(row.at("status"), bad ? "failed" : "done") << row.at("id");
+        if (bad) {
+            EXPECT_NE(row.at("error").find("not a regular file"), std::string::npos) << row.at("error");
+        }
+    }
+}
+
 TEST(CliBatch, ACrashingOrHangingWorkerCostsOnlyItsBlock) {
     const SmallDam dam;
     const ProcessResult crash = batch(dam, "crash", "--threads 2", "TUBEMESH_BATCH_TEST_FAULT=crash:c1-l2");
@@ -216,8 +234,11 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
         std::ofstream(p) << m.dump(2);
         return run_command(cli() + " batch " + q(p) + " -o " + q(dam.dir / "out"));
     };
+    const fs::path huge = dam.dir / "huge.json";
+    std::ofstream(huge) << R"({"tubemesh_batch": 1e99999, "blocks": []})";
     const std::vector<std::pair<ProcessResult, std::string>> cases = {
         {with([](json& m) { m["blocks"][1]["id"] = "c1-l1"; }), "appears twice"},
+        {run_command(cli() + " batch " + q(huge) + " -o " + q(dam.dir / "out")), "is not valid JSON"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"gradation", 9}}; }), "gradation must be between"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"sise", 1}}; }), "unknown option \"sise\""},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},

@@ -72,4 +72,15 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
     }
 }
 
+void diagnose_hole_clearances(const std::vector<HoleClearance>& holes) {
+    for (const HoleClearance& h : holes) {
+        if (h.distance >= kThinnestRing * h.radius) continue;
+        throw Error(fmt::format(
+            "the hole of faces {} (not a tube: meshed with tetrahedra) passes {:.3g} from face {} ({:.2g} of its radius "
+            "{:.3g}){}: the tetrahedra in that gap would be slivers; move the hole at least {:.3g} away from face {}",
+            face_list(h.hole_faces), h.distance, h.face, h.distance / h.radius, h.radius,
+            h.distance <= 1e-6 * h.radius ? " - it touches the face" : "", 0.2 * h.radius, h.face));
+    }
+}
+
 }  // namespace tubemesh::geom

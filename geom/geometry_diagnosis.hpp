@@ -6,6 +6,7 @@
 // tets between it and the face are slivers). Each is a tubemesh::Error naming the faces or
 // pipes, the distance, and what to change. No OpenCASCADE header here.
 #include "geom/sizing.hpp"
+#include "geom/sizing_distances.hpp"
 #include "geom/tubes.hpp"
 
 namespace tubemesh::geom {
@@ -22,5 +23,9 @@ void diagnose_faces(const TubeSearch& tubes, int face_count);
 // Throws when the distances (Dc, Dcb) leave room only for a ring thinner than kThinnestRing of
 // the radius of the pipe concerned, whatever St the user asked for.
 void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan);
+
+// Throws when a hole that is not a tube comes within kThinnestRing of its radius of a face it
+// does not touch: the tets in that gap would be slivers (boundary recovery fails there).
+void diagnose_hole_clearances(const std::vector<HoleClearance>& holes);
 
 }  // namespace tubemesh::geom

@@ -139,6 +139,7 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
         p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
         refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
         diagnose_clearances(p.tubes, p.plan);
+        diagnose_hole_clearances(measure_hole_clearances(model, p.tubes));
         p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
         progress.finish();
     }

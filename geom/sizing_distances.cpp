@@ -4,7 +4,14 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <Bnd_Box.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <gp_Cylinder.hxx>
+#include <gp_Torus.hxx>
 
 #include <algorithm>
 #include <array>
@@ -197,6 +204,57 @@ Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& t
         }
     }
     return c;
+}
+
+std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes) {
+    std::vector<HoleClearance> out;
+    TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+    bool edges_mapped = false;
+    for (const TubeRejection& rejected : tubes.rejected) {
+        HoleClearance h;
+        h.hole_faces = rejected.faces;
+        h.radius = std::numeric_limits<double>::infinity();
+        for (int f : rejected.faces) {
+            const BRepAdaptor_Surface surface(face_of(model, f));
+            if (surface.GetType() == GeomAbs_Cylinder)
+                h.radius = std::min(h.radius, surface.Cylinder().Radius());
+            else if (surface.GetType() == GeomAbs_Torus)
+                h.radius = std::min(h.radius, surface.Torus().MinorRadius());
+        }
+        if (!std::isfinite(h.radius)) continue;  // no face with a known radius: nothing to judge by
+        if (!edges_mapped) {
+            TopExp::MapShapesAndAncestors(solid_of(model), TopAbs_EDGE, TopAbs_FACE, edge_faces);
+            edges_mapped = true;
+        }
+        // The group's own faces and the faces it shares an edge with (its hosts) meet it: they
+        // are at distance 0 by construction.
+        std::set<int> near(rejected.faces.begin(), rejected.faces.end());
+        for (int f : rejected.faces)
+            for (TopExp_Explorer e(face_of(model, f), TopAbs_EDGE); e.More(); e.Next()) {
+                const int k = edge_faces.FindIndex(e.Current());
+                if (k == 0) continue;
+                for (const TopoDS_Shape& g : edge_faces(k)) near.insert(model.impl().faces.FindIndex(g));
+            }
+        for (int f : rejected.faces) {
+            const TopoDS_Face hole = face_of(model, f);
+            Bnd_Box hole_box;
+            BRepBndLib::Add(hole, hole_box);
+            for (int g = 1; g <= model.face_count(); ++g) {
+                if (near.count(g)) continue;
+                // Only the distance below the bar matters: a face whose box is farther is skipped.
+                Bnd_Box box;
+                BRepBndLib::Add(face_of(model, g), box);
+                if (hole_box.Distance(box) > std::min(h.distance, h.radius)) continue;
+                BRepExtrema_DistShapeShape dist(hole, face_of(model, g));
+                if (dist.IsDone() && dist.NbSolution() > 0 && dist.Value() < h.distance) {
+                    h.distance = dist.Value();
+                    h.face = g;
+                }
+            }
+        }
+        if (h.face > 0) out.push_back(std::move(h));
+    }
+    return out;
 }
 
 }  // namespace tubemesh::geom

@@ -25,6 +25,16 @@ struct Clearances {
 
 Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& tubes);
 
+// The closest a hole that is not a tube (a rejected face group) comes to a face it does not
+// touch, for the groups whose faces are cylinders or tori (their radius known exactly).
+struct HoleClearance {
+    std::vector<int> hole_faces;  // the rejected group
+    double radius = 0;            // its smallest cylinder or torus (minor) radius
+    double distance = std::numeric_limits<double>::infinity();  // measured only below the radius
+    int face = 0;                 // the face attaining it (0: none nearer than the radius)
+};
+std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes);
+
 // Diagonal of the solid's bounding box, for the default S: BRepBndLib::Add over the faces
 // that are no tube's wall. Not Model::bounds(): its optimal box took 2 s on a 190 m serpentine
 // pipe wall. Not the walls either: a B-spline wall's control polygon inflates a plain box, and

@@ -54,6 +54,8 @@ const std::string kTouching = kAlongX + ", " + line(0, 3.2, 0, 3.2, true);
 const std::string kTangent = line(3, 0.1, 3, 0.1);
 const std::string kGrazing = line(3, 0.101, 3, 0.101);
 const std::string kClose = kAlongX + ", " + line(3, 3.21, 3, 3.21);
+// A hole too wide for the tube rule (all tets), 0.001 from the bottom face.
+const std::string kGrazingHole = R"({"path": "line", "diameter": 0.5, "points": [[0, 3, 0.251], [6, 3, 0.251]]})";
 
 INSTANTIATE_TEST_SUITE_P(
     Rows, CliMeshGeometry,
@@ -61,7 +63,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"touching", kTouching.c_str(), "come within"},
                       Case{"tangent", kTangent.c_str(), "a pipe wall touches a face tangentially"},
                       Case{"grazing", kGrazing.c_str(), "pipe 1 (wall face 6) passes 0.001 from face 4"},
-                      Case{"close", kClose.c_str(), "come within 0.01 of each other"}),
+                      Case{"close", kClose.c_str(), "come within 0.01 of each other"},
+                      Case{"grazing_hole", kGrazingHole.c_str(), "(not a tube: meshed with tetrahedra) passes 0.001 from"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Blind holes are no tubes: all tets, with the holes' walls meshed from their own radius even

@@ -1,5 +1,6 @@
 #include "geom/prepare.hpp"
 
+#include <Standard_Failure.hxx>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -115,7 +116,9 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     return p;
 }
 
-PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
+namespace {
+
+PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& options) {
     if (options.discretize.ring_nodes < 0 || options.discretize.ring_nodes == 1 || options.discretize.ring_nodes == 2)
         throw Error(fmt::format("the number of nodes around a tube must be at least 3 (4 or more recommended), got {}",
                                 options.discretize.ring_nodes));
@@ -168,6 +171,19 @@ PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
     if (around) disc.counts.push_back({"nodes around (fewest)", double(around)});
     p.phases.push_back(std::move(disc));
     return p;
+}
+
+}  // namespace
+
+PreparedModel prepare_model(const Model& model, const PrepareOptions& options) {
+    // OpenCASCADE's exceptions are no std::exception: one escaping here would end the process.
+    try {
+        return prepare_unguarded(model, options);
+    } catch (const Standard_Failure& e) {
+        throw Error(fmt::format("internal error: OpenCASCADE failed while reading the model's tubes and sizes ({}: "
+                                "\"{}\"); please report it with the CAD file",
+                                e.DynamicType()->Name(), e.GetMessageString()));
+    }
 }
 
 PipelineInput PreparedModel::pipeline_input() const {

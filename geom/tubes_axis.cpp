@@ -15,6 +15,8 @@ constexpr int kMinSamples = 32;
 constexpr int kMaxSamples = 512;
 constexpr double kSagittaFraction = 0.01;
 constexpr int kMaxRefinement = 10;
+// Farther than this many radii from line 0's point, a line's point is on another run of it.
+constexpr double kMaxSectionSpread = 4;
 
 using Points = std::array<GeneratorPoint, 4>;
 
@@ -37,6 +39,19 @@ double crossing(const Generator& g, const gp_Pnt& p, const gp_Vec& n, double sig
         sigma = next;
     }
     return sigma;
+}
+
+// The fraction of line g nearest to p, by a scan at steps of half `radius` (then Newton on the
+// section plane refines it). Only for a section that strayed: a scan of the whole line.
+double nearest_fraction(const Generator& g, const gp_Pnt& p, double radius) {
+    const int steps = static_cast<int>(std::clamp(std::ceil(2 * g.length() / std::max(radius, 1e-300)), 16.0, 1e6));
+    double best = 0, best_d = kInf;
+    for (int i = 0; i <= steps; ++i) {
+        const double sigma = static_cast<double>(i) / steps;
+        const double d = g.at(sigma).p.SquareDistance(p);
+        if (d < best_d) best_d = d, best = sigma;
+    }
+    return best;
 }
 
 // Centre of the circle through the points, fitted in the plane normal to `normal` (algebraic
@@ -117,6 +132,7 @@ TubeAxis::TubeAxis(std::array<Generator, 4> generators) : generators_(std::move(
     const double span = length();
     const int n = static_cast<int>(
         std::clamp(std::ceil(span / std::max(2 * first.radius, 1e-300)), double(kMinSamples), double(kMaxSamples)));
+    radius_ = first.radius;
     sagitta_tolerance_ = kSagittaFraction * first.radius;
 
     std::array<double, 3> sigmas{0, 0, 0};
@@ -151,7 +167,10 @@ void TubeAxis::refine(std::size_t last, const AxisSample& next, double sigma0, c
                       int depth) {
     const AxisSample& a = samples_[last];
     const double chord = a.centre.Distance(next.centre);
-    const double k = std::max(1 / a.bend_radius, 1 / next.bend_radius);
+    double k = std::max(1 / a.bend_radius, 1 / next.bend_radius);
+    // Both ends straight but pointing apart: a whole bend lies between them (a tight U-bend on a
+    // long pipe, shorter than one first step). Its curvature is at least the turn over the chord.
+    if (k == 0 && chord > 0) k = a.tangent.Angle(next.tangent) / chord;
     if (depth >= kMaxRefinement || chord * chord * k / 8 <= sagitta_tolerance_) return;
     const double mid0 = (sigma0_[last] + sigma0) / 2;
     std::array<double, 3> mid_sigmas;
@@ -193,11 +212,19 @@ AxisSample TubeAxis::section(double sigma0, std::array<double, 3>& sigmas) const
     g[0] = generators_[0].at(sigma0);
     gp_Vec tangent = g[0].d1.Normalized();
     // The plane's normal is the mean tangent of the four lines, which depends on where they
-    // cross it: two rounds settle it.
+    // cross it: two rounds settle it. A section's four points lie within a diameter or so of
+    // each other; Newton from the last section's fractions can land on another run of the same
+    // line when a whole bend lies between the two (a serpentine's U-bend on a long pipe): such
+    // a line starts again from its point nearest to line 0's.
     for (int round = 0; round < 2; ++round) {
         for (int k = 1; k < 4; ++k) {
             sigmas[k - 1] = crossing(generators_[k], g[0].p, tangent, sigmas[k - 1]);
             g[k] = generators_[k].at(sigmas[k - 1]);
+            if (g[k].p.Distance(g[0].p) > kMaxSectionSpread * radius_) {
+                sigmas[k - 1] =
+                    crossing(generators_[k], g[0].p, tangent, nearest_fraction(generators_[k], g[0].p, radius_));
+                g[k] = generators_[k].at(sigmas[k - 1]);
+            }
         }
         tangent = mean_tangent(g);
     }

@@ -71,6 +71,7 @@ private:
 
     std::array<Generator, 4> generators_;
     std::array<double, 4> lengths_{};
+    double radius_ = 0;  // at E1: the scale for judging a section
     double sagitta_tolerance_ = 0;
     std::vector<double> sigma0_;                 // line 0's arc length fraction at each sample
     std::vector<std::array<double, 3>> sigmas_;  // lines 1-3's fractions there

@@ -7,6 +7,8 @@
 #include <limits>
 #include <numbers>
 
+#include "geom/builders/block_builder.hpp"
+#include "geom/builders/serpentine.hpp"
 #include "geom/tubes.hpp"
 #include "tests/geom_tubes_solids.hpp"
 
@@ -189,6 +191,31 @@ TEST(GeomTubes, PipeSolidsOwnEndCapsAreNoHosts) {
     const geom::TubeSearch found = geom::find_tubes(model_of(solid));
     EXPECT_TRUE(found.tubes.empty());
     EXPECT_TRUE(found.rejected.empty());  // no hole anywhere: nothing was even a candidate
+}
+
+// A serpentine whose U-bends are shorter than the first sampling step along its 255 m pipe: a
+// section must not jump to the next run across a bend (the radius came out as 0.0146, the
+// distances negative and St below zero).
+TEST(TubeRecognition, TightUBendsOnALongSerpentineAreFollowed) {
+    geom::SerpentineParams params;
+    params.size = {20, 3, 1};
+    params.spacing = 0.2;
+    params.bend_radius = 0.1;
+    const geom::BlockSpec spec = geom::serpentine_spec(params);
+    const geom::TubeSearch search = geom::find_tubes(geom::build_block(spec).model);
+    ASSERT_EQ(search.tubes.size(), 1u);
+    const geom::TubeInfo& tube = search.tubes[0];
+    EXPECT_NEAR(tube.radius_min, 0.016, 1e-4);
+    EXPECT_NEAR(tube.radius_max, 0.016, 1e-4);
+    EXPECT_NEAR(tube.min_curvature_radius, params.bend_radius, 0.05 * params.bend_radius);
+    // The polyline's length less, at each right-angle corner, the 2R it cuts off plus the
+    // quarter circle that replaces it.
+    const std::vector<Vec3>& p = spec.pipes[0].points;
+    double length = 0;
+    for (std::size_t i = 1; i < p.size(); ++i)
+        length += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y, p[i].z - p[i - 1].z);
+    length -= static_cast<double>(p.size() - 2) * (2 - std::numbers::pi / 2) * params.bend_radius;
+    EXPECT_NEAR(tube.length, length, 1e-3 * length);
 }
 
 }  // namespace

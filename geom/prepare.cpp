@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "geom/discretize.hpp"
+#include "geom/gap_sizes.hpp"
 #include "geom/face_properties.hpp"
 #include "geom/geometry_diagnosis.hpp"
 #include "geom/sizing_distances.hpp"
@@ -157,6 +158,7 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         PhaseProgress progress(options.progress, "discretize", 1);
         p.geometry = discretize(model, p.tubes.tubes, p.plan, options.discretize);
         p.maps = make_surface_maps(model);
+        p.gap_sizes = gap_size_sources(model, p.tubes, p.plan.size);
         progress.finish();
     }
     std::size_t edge_points = 0, stations = 0;
@@ -199,7 +201,7 @@ PipelineInput PreparedModel::pipeline_input() const {
         if (face == 0 || face > m->size()) return nullptr;
         return (*m)[face - 1].get();
     };
-    return PipelineInput{geometry, std::move(lookup), std::move(faces)};
+    return PipelineInput{geometry, std::move(lookup), std::move(faces), gap_sizes};
 }
 
 std::vector<std::string> PreparedModel::report_lines() const {

@@ -43,6 +43,7 @@ public:
     ElementEstimate estimate;  // the lower bound options.budget was checked on
     DiscreteGeometry geometry;
     std::vector<std::unique_ptr<SurfaceMap>> maps;  // element i: face id i + 1
+    std::vector<SizeSource> gap_sizes;              // geom/gap_sizes.hpp
     std::vector<PhaseReport> phases;                // "tubes", "sizes", "discretize"
     // What the user should be told: no tube found, S lowered by the rules, the plan's own
     // warnings. One line each.

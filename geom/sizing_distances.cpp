@@ -206,13 +206,14 @@ Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& t
     return c;
 }
 
-std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes) {
-    std::vector<HoleClearance> out;
+std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes,
+                                   const std::function<double(double)>& reach) {
+    std::vector<HoleGroup> out;
     TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
-    bool edges_mapped = false;
+    std::vector<Bnd_Box> boxes;
     for (const TubeRejection& rejected : tubes.rejected) {
-        HoleClearance h;
-        h.hole_faces = rejected.faces;
+        HoleGroup h;
+        h.faces = rejected.faces;
         h.radius = std::numeric_limits<double>::infinity();
         for (int f : rejected.faces) {
             const BRepAdaptor_Surface surface(face_of(model, f));
@@ -222,36 +223,43 @@ std::vector<HoleClearance> measure_hole_clearances(const Model& model, const Tub
                 h.radius = std::min(h.radius, surface.Torus().MinorRadius());
         }
         if (!std::isfinite(h.radius)) continue;  // no face with a known radius: nothing to judge by
-        if (!edges_mapped) {
+        if (boxes.empty()) {
             TopExp::MapShapesAndAncestors(solid_of(model), TopAbs_EDGE, TopAbs_FACE, edge_faces);
-            edges_mapped = true;
+            boxes.resize(static_cast<std::size_t>(model.face_count()) + 1);
+            for (int g = 1; g <= model.face_count(); ++g) BRepBndLib::Add(face_of(model, g), boxes[g]);
         }
-        // The group's own faces and the faces it shares an edge with (its hosts) meet it: they
-        // are at distance 0 by construction.
-        std::set<int> near(rejected.faces.begin(), rejected.faces.end());
+        // The group's own faces and those it shares an edge with (its hosts) meet it.
+        std::set<int> touching(rejected.faces.begin(), rejected.faces.end());
         for (int f : rejected.faces)
             for (TopExp_Explorer e(face_of(model, f), TopAbs_EDGE); e.More(); e.Next()) {
                 const int k = edge_faces.FindIndex(e.Current());
                 if (k == 0) continue;
-                for (const TopoDS_Shape& g : edge_faces(k)) near.insert(model.impl().faces.FindIndex(g));
+                for (const TopoDS_Shape& g : edge_faces(k)) touching.insert(model.impl().faces.FindIndex(g));
             }
-        for (int f : rejected.faces) {
-            const TopoDS_Face hole = face_of(model, f);
-            Bnd_Box hole_box;
-            BRepBndLib::Add(hole, hole_box);
-            for (int g = 1; g <= model.face_count(); ++g) {
-                if (near.count(g)) continue;
-                // Only the distance below the bar matters: a face whose box is farther is skipped.
-                Bnd_Box box;
-                BRepBndLib::Add(face_of(model, g), box);
-                if (hole_box.Distance(box) > std::min(h.distance, h.radius)) continue;
-                BRepExtrema_DistShapeShape dist(hole, face_of(model, g));
+        const double within = reach(h.radius);
+        for (int g = 1; g <= model.face_count(); ++g) {
+            if (touching.count(g)) continue;
+            bool near = false;
+            for (int f : rejected.faces) near = near || boxes[f].Distance(boxes[g]) <= within;
+            if (near) h.near_faces.push_back(g);
+        }
+        out.push_back(std::move(h));
+    }
+    return out;
+}
+
+std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes) {
+    std::vector<HoleClearance> out;
+    for (const HoleGroup& group : hole_groups(model, tubes, [](double r) { return r; })) {
+        HoleClearance h{group.faces, group.radius};
+        for (int f : group.faces)
+            for (int g : group.near_faces) {
+                BRepExtrema_DistShapeShape dist(face_of(model, f), face_of(model, g));
                 if (dist.IsDone() && dist.NbSolution() > 0 && dist.Value() < h.distance) {
                     h.distance = dist.Value();
                     h.face = g;
                 }
             }
-        }
         if (h.face > 0) out.push_back(std::move(h));
     }
     return out;

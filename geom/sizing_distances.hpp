@@ -7,6 +7,7 @@
 // to the tubes' centre-line polylines (TubeInfo::centre_line) minus r_max: exact up to the
 // polylines' 1%-of-r chord error, and far cheaper than BRepExtrema between B-spline walls
 // (seconds per pair on a long serpentine pipe).
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -25,13 +26,24 @@ struct Clearances {
 
 Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& tubes);
 
-// The closest a hole that is not a tube (a rejected face group) comes to a face it does not
-// touch, for the groups whose faces are cylinders or tori (their radius known exactly).
-struct HoleClearance {
-    std::vector<int> hole_faces;  // the rejected group
+// A hole that is not a tube (a rejected face group) whose faces are cylinders or tori, with
+// the faces it does not touch that come within `reach` of it (by bounding boxes): the faces a
+// narrow gap can lie between.
+struct HoleGroup {
+    std::vector<int> faces;       // the rejected group
     double radius = 0;            // its smallest cylinder or torus (minor) radius
-    double distance = std::numeric_limits<double>::infinity();  // measured only below the radius
-    int face = 0;                 // the face attaining it (0: none nearer than the radius)
+    std::vector<int> near_faces;  // not in the group, sharing no edge with it, boxes within reach
+};
+// reach(radius): how far to look from a group of that radius.
+std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes,
+                                   const std::function<double(double)>& reach);
+
+// The closest a hole group comes to one of its near faces (reach: its radius).
+struct HoleClearance {
+    std::vector<int> hole_faces;
+    double radius = 0;
+    double distance = std::numeric_limits<double>::infinity();
+    int face = 0;  // the face attaining it
 };
 std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes);
 

@@ -135,6 +135,9 @@ struct PipelineInput {
     const DiscreteGeometry& geometry;
     SurfaceLookup surfaces;           // face id -> its SurfaceMap (must outlive run_pipeline)
     std::vector<PipelineFace> faces;  // every face of the model, in id order
+    // Sizes the geometry asks for at points the rings and the faces' curvature do not see: the
+    // narrow gaps between a hole that is not a tube and a face it passes (geom/gap_sizes.hpp).
+    std::vector<SizeSource> gap_sizes;
 };
 
 // One phase of a run: the engine's phases (run_pipeline) and, before them, geom's (import,

@@ -27,6 +27,7 @@ SurfaceSizing surface_sizing(const PipelineInput& in, std::span<const TubeRing> 
     for (const TubeRing& ring : rings)
         for (const RingEnd& end : ring.ends) add_polygon_sources(end.outer_xyz, ring_sources);
     ring_sources.insert(ring_sources.end(), caps.begin(), caps.end());
+    ring_sources.insert(ring_sources.end(), in.gap_sizes.begin(), in.gap_sizes.end());
     for (const PipelineFace& f : in.faces)
         if (!(f.tube_wall || walls.count(f.id)))
             if (const SurfaceMap* map = in.surfaces(f.id)) add_curvature_sources(*map, g.size, ring_sources);

@@ -101,6 +101,7 @@ Manifest parse_manifest(const std::string& text, const fs::path& path, const nlo
 
     Manifest m;
     m.path = fs::absolute(path);
+    if (j.contains("name") && !j["name"].is_string()) throw Error(file + ": \"name\" must be a string");
     m.name = j.value("name", path.stem().string());
     const nlohmann::json defaults =
         merge_block_options(default_block_options(), j.contains("defaults") ? j["defaults"] : nlohmann::json(),

@@ -243,6 +243,7 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
         {with([](json& m) { m["blocks"][0]["options"] = {{"sise", 1}}; }), "unknown option \"sise\""},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
         {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},
+        {with([](json& m) { m["name"] = {{"size", 1}}; }), "\"name\" must be a string"},
         {run_command(cli() + " batch " + q(dam.manifest()) + " -o " + q(dam.dir / "o") + " --shard 2/2"), "--shard"},
         {run_command(cli() + " batch " + q(dam.dir / "missing.json") + " -o " + q(dam.dir / "o")), "missing.json"},
     };

@@ -39,8 +39,10 @@ void check_value(const std::string& key, const nlohmann::json& v, const std::str
         if (!automatic && !(v.is_number() && std::isfinite(v.get<double>())))
             throw Error(fmt::format("{}: \"{}\" must be a number{}, got {}", where, key,
                                     key == "time_limit" ? "" : " or null (automatic)", v.dump()));
-        if (!automatic && k.whole && v.get<double>() != std::floor(v.get<double>()))
-            throw Error(fmt::format("{}: \"{}\" must be a whole number, got {}", where, key, v.dump()));
+        // Whole numbers become ints: beyond that range they are out of every option's range anyway.
+        if (!automatic && k.whole &&
+            (v.get<double>() != std::floor(v.get<double>()) || std::abs(v.get<double>()) > 1e9))
+            throw Error(fmt::format("{}: \"{}\" must be a whole number of at most 1e9, got {}", where, key, v.dump()));
         if (key == "time_limit" && v.get<double>() < 0)
             throw Error(fmt::format("{}: \"time_limit\" must be at least 0 (0: none), got {}", where, v.dump()));
         return;

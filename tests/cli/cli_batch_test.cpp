@@ -240,6 +240,7 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
         {with([](json& m) { m["blocks"][1]["id"] = "c1-l1"; }), "appears twice"},
         {run_command(cli() + " batch " + q(huge) + " -o " + q(dam.dir / "out")), "is not valid JSON"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"gradation", 9}}; }), "gradation must be between"},
+        {with([](json& m) { m["blocks"][0]["options"] = {{"circ", 1e32}}; }), "\"circ\" must be a whole number"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"sise", 1}}; }), "unknown option \"sise\""},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
         {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},

@@ -43,7 +43,7 @@ std::vector<DamBlock> dam_blocks(const DamParams& p) {
     Random rng(p.seed);
     const int column_digits = static_cast<int>(std::to_string(p.columns).size());
     const int lift_digits = static_cast<int>(std::to_string(p.lifts).size());
-    const bool pipeless_ends = p.columns * p.lifts >= 3;
+    const bool pipeless_ends = p.pipeless_ends && p.columns * p.lifts >= 3;
     std::vector<DamBlock> blocks;
     double x = 0;
     for (int c = 1; c <= p.columns; ++c) {

@@ -31,6 +31,8 @@ struct DamParams {
     Range spacing{1.0, 2.0};     // between neighbouring runs, per block
     // Bend radius per block as a share of its spacing: at most 1/2 (serpentine_spec's limit).
     Range bend_share{0.4, 0.5};
+    // The foundation and crest blocks go without a pipe (below); false gives every block one.
+    bool pipeless_ends = true;
 };
 
 struct DamBlock {

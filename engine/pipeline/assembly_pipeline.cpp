@@ -1,0 +1,288 @@
+#include "engine/pipeline/assembly_pipeline.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <unordered_map>
+
+#include "engine/check/mesh_check.hpp"
+#include "engine/pipeline/thread_limit.hpp"
+
+namespace tubemesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// One solid's pyramids and tets, in a mesh of its own: its boundary's points first (local id i
+// is point global[i] of the whole mesh), then what its steps add.
+struct SolidWork {
+    std::vector<index_t> global;
+    HybridMesh mesh;
+    std::vector<index_t> boundary;  // local ids, 3 per triangle, normal out of the solid
+    std::vector<index_t> front_quads, obstacle_quads;
+    std::vector<index_t> tet_front;
+    PyramidStats pyramid_stats;
+    tets::TetStepStats tet_stats;
+    double seconds = 0;
+};
+
+// The B-rep face of every boundary triangle of the whole mesh, from its group "face_<id>".
+std::vector<index_t> triangle_faces(const HybridMesh& mesh) {
+    std::vector<index_t> face_of_group(mesh.surface_group_names.size(), 0);
+    for (std::size_t g = 0; g < face_of_group.size(); ++g) {
+        const std::string& name = mesh.surface_group_names[g];
+        if (name.rfind("face_", 0) == 0) face_of_group[g] = static_cast<index_t>(std::stoul(name.substr(5)));
+    }
+    const FaceBlock& tris = mesh.block(FaceKind::Tri);
+    std::vector<index_t> out(tris.group.size());
+    for (std::size_t t = 0; t < out.size(); ++t) out[t] = face_of_group[tris.group[t]];
+    return out;
+}
+
+void append_range(const std::vector<index_t>& from, index_t first, index_t count, std::vector<index_t>& to) {
+    to.insert(to.end(), from.begin() + 4 * first, from.begin() + 4 * (first + count));
+}
+
+// The solid's boundary triangles and ring quads, renumbered into a mesh of its own.
+SolidWork gather_solid(const PipelineResult& whole, const std::vector<index_t>& tri_face,
+                       const AssemblySolidInput& solid) {
+    std::unordered_map<index_t, char> flip;
+    for (std::size_t i = 0; i < solid.faces.size(); ++i) flip[solid.faces[i]] = solid.reversed[i];
+    SolidWork w;
+    const FaceBlock& tris = whole.mesh.block(FaceKind::Tri);
+    for (std::size_t t = 0; t < tri_face.size(); ++t) {
+        const auto it = flip.find(tri_face[t]);
+        if (it == flip.end()) continue;
+        const index_t* n = &tris.nodes[3 * t];
+        if (it->second) w.boundary.insert(w.boundary.end(), {n[0], n[2], n[1]});
+        else w.boundary.insert(w.boundary.end(), {n[0], n[1], n[2]});
+    }
+    for (index_t k : solid.tubes) {
+        const TubeRing& ring = whole.sweep.rings[k];
+        append_range(whole.sweep.outer_quads, ring.first_lateral_quad, (ring.stations - 1) * ring.circumferential,
+                     w.front_quads);
+        append_range(whole.sweep.end_quads, ring.first_end_quad, 2 * ring.radial_layers * ring.circumferential,
+                     w.obstacle_quads);
+    }
+    w.global = w.boundary;
+    w.global.insert(w.global.end(), w.front_quads.begin(), w.front_quads.end());
+    w.global.insert(w.global.end(), w.obstacle_quads.begin(), w.obstacle_quads.end());
+    std::sort(w.global.begin(), w.global.end());
+    w.global.erase(std::unique(w.global.begin(), w.global.end()), w.global.end());
+    const auto local = [&](index_t g) {
+        return static_cast<index_t>(std::lower_bound(w.global.begin(), w.global.end(), g) - w.global.begin());
+    };
+    for (auto* list : {&w.boundary, &w.front_quads, &w.obstacle_quads})
+        for (index_t& v : *list) v = local(v);
+    for (index_t g : w.global) w.mesh.add_point(whole.mesh.x[g], whole.mesh.y[g], whole.mesh.z[g]);
+    w.mesh.region_id(solid.name);
+    return w;
+}
+
+void run_solid_pyramids(SolidWork& w, const MeshOptions& opt) {
+    const auto t0 = Clock::now();
+    PyramidResult p;
+    if (!w.front_quads.empty()) {
+        PyramidInput in;
+        in.front_quads = w.front_quads;
+        in.boundary_triangles = w.boundary;
+        in.obstacle_quads = w.obstacle_quads;
+        in.region = 0;
+        p = build_pyramids(w.mesh, in, opt.pyramids);
+    }
+    w.tet_front = p.free_triangles;
+    std::vector<char> covered(w.boundary.size() / 3, 0);
+    for (index_t t : p.covered_boundary_triangles) covered[t] = 1;
+    for (std::size_t t = 0; t < covered.size(); ++t)
+        if (!covered[t]) w.tet_front.insert(w.tet_front.end(), w.boundary.begin() + 3 * t, w.boundary.begin() + 3 * t + 3);
+    w.pyramid_stats = p.stats;
+    w.seconds += seconds_since(t0);
+}
+
+void run_solid_tets(SolidWork& w, const MeshOptions& opt, double far_size) {
+    const auto t0 = Clock::now();
+    tets::TetStepOptions to = opt.tets;
+    to.far_size = far_size;
+    to.threads = 0;
+    w.tet_stats = tets::build_tets(w.mesh, w.tet_front, 0, to);
+    w.seconds += seconds_since(t0);
+}
+
+// Runs `step` on every solid side by side; an error names the solid.
+template <class Step>
+void for_each_solid(std::vector<SolidWork>& work, const AssemblyInput& in, PhaseProgress& progress, Step step) {
+    std::vector<std::string> errors(work.size());
+    tbb::parallel_for(std::size_t{0}, work.size(), [&](std::size_t k) {
+        try {
+            step(work[k]);
+        } catch (const Error& e) {
+            errors[k] = e.what();
+        }
+        progress.advance();
+    });
+    for (std::size_t k = 0; k < work.size(); ++k)
+        if (!errors[k].empty()) throw Error(in.solids[k].name + ": " + errors[k]);
+}
+
+// The solids' cells into the whole mesh, in solid order: region k is solid k.
+void merge_solids(std::vector<SolidWork>& work, HybridMesh& mesh) {
+    for (std::size_t k = 0; k < work.size(); ++k) {
+        SolidWork& w = work[k];
+        std::vector<index_t> to_global = w.global;
+        for (index_t i = static_cast<index_t>(w.global.size()); i < w.mesh.point_count(); ++i)
+            to_global.push_back(mesh.add_point(w.mesh.x[i], w.mesh.y[i], w.mesh.z[i]));
+        for (CellKind kind : {CellKind::Pyramid, CellKind::Tet}) {
+            const CellBlock& from = w.mesh.block(kind);
+            CellBlock& to = mesh.block(kind);
+            for (index_t v : from.nodes) to.nodes.push_back(to_global[v]);
+            to.region.insert(to.region.end(), from.region.size(), static_cast<index_t>(k));
+        }
+        w.mesh.clear();
+    }
+}
+
+// The cells of one region, with every point of the mesh: for per-solid measures.
+HybridMesh region_mesh(const HybridMesh& mesh, index_t region) {
+    HybridMesh out;
+    out.x = mesh.x;
+    out.y = mesh.y;
+    out.z = mesh.z;
+    out.region_names = {mesh.region_names[region]};
+    for (int k = 0; k < kCellKindCount; ++k) {
+        const CellKind kind = static_cast<CellKind>(k);
+        for (index_t c = 0; c < mesh.cell_count(kind); ++c)
+            if (mesh.block(kind).region[c] == region) out.add_cell(kind, mesh.cell(kind, c), 0);
+    }
+    return out;
+}
+
+// Shared faces' triangles are interior now: out of the boundary faces.
+index_t drop_shared_triangles(const AssemblyInput& in, const std::vector<index_t>& tri_face, HybridMesh& mesh) {
+    std::unordered_map<index_t, int> solids_of_face;
+    for (const AssemblySolidInput& s : in.solids)
+        for (index_t f : s.faces) ++solids_of_face[f];
+    FaceBlock& tris = mesh.block(FaceKind::Tri);
+    FaceBlock kept;
+    index_t dropped = 0;
+    for (std::size_t t = 0; t < tri_face.size(); ++t) {
+        if (solids_of_face[tri_face[t]] > 1) {
+            ++dropped;
+            continue;
+        }
+        kept.nodes.insert(kept.nodes.end(), tris.nodes.begin() + 3 * t, tris.nodes.begin() + 3 * t + 3);
+        kept.group.push_back(tris.group[t]);
+    }
+    tris = std::move(kept);
+    return dropped;
+}
+
+// Surface groups left without faces (the shared faces') go; the others keep their order.
+void drop_empty_groups(HybridMesh& mesh) {
+    std::vector<index_t> used(mesh.surface_group_names.size(), 0);
+    for (const FaceBlock& b : mesh.faces)
+        for (index_t g : b.group) used[g] = 1;
+    std::vector<index_t> new_id(used.size(), kNoIndex);
+    std::vector<std::string> names;
+    for (std::size_t g = 0; g < used.size(); ++g)
+        if (used[g]) {
+            new_id[g] = static_cast<index_t>(names.size());
+            names.push_back(mesh.surface_group_names[g]);
+        }
+    for (FaceBlock& b : mesh.faces)
+        for (index_t& g : b.group) g = new_id[g];
+    mesh.surface_group_names = std::move(names);
+}
+
+}  // namespace
+
+AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& options) {
+    const auto threads = limit_threads(options.threads);
+    AssemblyResult out;
+    PipelineResult& r = out.result;
+    r = run_pipeline(input.whole, options, Stage::Surface);
+    r.seconds = 0;
+
+    const std::vector<index_t> tri_face = triangle_faces(r.mesh);
+    std::vector<SolidWork> work;
+    for (const AssemblySolidInput& s : input.solids) work.push_back(gather_solid(r, tri_face, s));
+    const double far_size = options.tets.far_size > 0 ? options.tets.far_size : input.whole.geometry.size;
+
+    auto t0 = Clock::now();
+    {
+        PhaseProgress progress(options.progress, "pyramids", work.size());
+        for_each_solid(work, input, progress, [&](SolidWork& w) { run_solid_pyramids(w, options); });
+        progress.finish();
+    }
+    PhaseReport pyramids{"pyramids", seconds_since(t0), {}, {}};
+    t0 = Clock::now();
+    {
+        PhaseProgress progress(options.progress, "tets", work.size());
+        for_each_solid(work, input, progress, [&](SolidWork& w) { run_solid_tets(w, options, far_size); });
+        progress.finish();
+    }
+    PhaseReport tets{"tets", seconds_since(t0), {}, {}};
+
+    double apexes = 0, front = 0, new_nodes = 0, recovered = 0, steiner = 0;
+    for (std::size_t k = 0; k < work.size(); ++k) {
+        const SolidWork& w = work[k];
+        SolidSummary s;
+        s.name = input.solids[k].name;
+        s.pyramids = w.pyramid_stats.pyramids;
+        s.tets = w.tet_stats.tets;
+        s.seconds = w.seconds;
+        s.tet_stats = w.tet_stats;
+        out.solids.push_back(std::move(s));
+        apexes += w.pyramid_stats.ideal + w.pyramid_stats.wide;
+        front += w.tet_stats.front_triangles;
+        new_nodes += w.tet_stats.new_points;
+        recovered += w.tet_stats.recovery.missing_edges + w.tet_stats.recovery.missing_faces;
+        steiner += w.tet_stats.recovery.steiner_kept;
+    }
+    merge_solids(work, r.mesh);
+
+    // Regions: solid k, hexes by the solid their tube lies in.
+    r.mesh.region_names.clear();
+    for (const AssemblySolidInput& s : input.solids) r.mesh.region_names.push_back(s.name);
+    CellBlock& hexes = r.mesh.block(CellKind::Hex);
+    for (std::size_t k = 0; k < input.solids.size(); ++k)
+        for (index_t t : input.solids[k].tubes) {
+            const TubeRing& ring = r.sweep.rings[t];
+            std::fill_n(hexes.region.begin() + ring.first_hex, ring.hex_count, static_cast<index_t>(k));
+        }
+    out.shared_triangles = drop_shared_triangles(input, tri_face, r.mesh);
+    drop_empty_groups(r.mesh);
+
+    index_t pyramid_total = 0, tet_total = 0;
+    for (SolidSummary& s : out.solids) {
+        pyramid_total += s.pyramids;
+        tet_total += s.tets;
+    }
+    pyramids.counts = {{"solids", double(work.size())}, {"pyramids", double(pyramid_total)}, {"ideal apex", apexes}};
+    tets.counts = {{"tets", double(tet_total)},
+                   {"front triangles", front},
+                   {"new nodes", new_nodes},
+                   {"front edges and faces recovered", recovered},
+                   {"steiner points kept", steiner},
+                   {"shared triangles", double(out.shared_triangles)}};
+    r.phases.push_back(std::move(pyramids));
+    r.phases.push_back(std::move(tets));
+    r.reached = Stage::Tets;
+
+    for (std::size_t k = 0; k < out.solids.size(); ++k) {
+        const HybridMesh part = region_mesh(r.mesh, static_cast<index_t>(k));
+        SolidSummary& s = out.solids[k];
+        s.hexes = part.cell_count(CellKind::Hex);
+        s.quality = summarize_quality(part);
+        s.volume = check_mesh(part).volume;
+    }
+    r.quality = summarize_quality(r.mesh);
+    for (const PhaseReport& p : r.phases) r.seconds += p.seconds;
+    return out;
+}
+
+}  // namespace tubemesh

@@ -1,6 +1,7 @@
 #include "geom/assembly/assembly.hpp"
 
 #include <BRepBndLib.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -39,25 +40,35 @@ namespace {
 // Relative to the bounding-box diagonal when the user gives none (assembly.hpp).
 constexpr double kDefaultGlueShare = 1e-6;
 
-gp_Pnt box_centre(const TopoDS_Shape& s, double& diagonal) {
+// The centre and diagonal of a solid's vertices' box: the same for a copy, and fast (the
+// boxes of a pipe's B-spline wall cost seconds).
+std::pair<gp_Pnt, double> box_key(const TopoDS_Shape& s) {
     Bnd_Box box;
-    BRepBndLib::AddOptimal(s, box, false, false);
-    diagonal = std::sqrt(box.SquareExtent());
+    for (TopExp_Explorer it(s, TopAbs_VERTEX); it.More(); it.Next()) box.Add(BRep_Tool::Pnt(TopoDS::Vertex(it.Current())));
     double x0, y0, z0, x1, y1, z1;
     box.Get(x0, y0, z0, x1, y1, z1);
-    return gp_Pnt((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2);
+    return {gp_Pnt((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2), std::sqrt(box.SquareExtent())};
 }
 
-// The file's name for a solid: the named one it is, else the one whose bounding box it fills
-// (the reader's healing may have copied it), else none.
-std::string name_in(const CadFile& file, const TopoDS_Shape& solid) {
-    for (const auto& [shape, name] : file.names)
-        if (shape.IsSame(solid)) return name;
-    double size = 0, other = 0;
-    const gp_Pnt centre = box_centre(solid, size);
-    for (const auto& [shape, name] : file.names)
-        if (box_centre(shape, other).Distance(centre) < 1e-6 * size && std::abs(other - size) < 1e-6 * size) return name;
-    return {};
+// Each solid's name in the file: the named solid it is, else the one whose box it has (the
+// reader's healing may have copied it), else none.
+std::vector<std::string> names_in(const CadFile& file, const std::vector<TopoDS_Solid>& solids) {
+    std::vector<std::pair<gp_Pnt, double>> named;
+    for (const auto& entry : file.names) named.push_back(box_key(entry.first));
+    std::vector<std::string> out;
+    for (const TopoDS_Solid& solid : solids) {
+        std::string name;
+        for (const auto& [shape, n] : file.names)
+            if (shape.IsSame(solid)) name = n;
+        if (name.empty() && !named.empty()) {
+            const auto [centre, size] = box_key(solid);
+            for (std::size_t i = 0; i < named.size() && name.empty(); ++i)
+                if (named[i].first.Distance(centre) < 1e-9 * size && std::abs(named[i].second - size) < 1e-9 * size)
+                    name = file.names[i].second;
+        }
+        out.push_back(name);
+    }
+    return out;
 }
 
 }  // namespace
@@ -71,9 +82,11 @@ Assembly import_assembly(const std::string& path, const AssemblyOptions& options
     report.length_unit = file.length_unit;
     report.notes = std::move(file.notes);
     try {
+        std::vector<TopoDS_Solid> found;
+        for (TopExp_Explorer it(file.shape, TopAbs_SOLID); it.More(); it.Next()) found.push_back(TopoDS::Solid(it.Current()));
+        const std::vector<std::string> names = names_in(file, found);
         std::vector<NamedSolid> solids;
-        for (TopExp_Explorer it(file.shape, TopAbs_SOLID); it.More(); it.Next())
-            solids.push_back({TopoDS::Solid(it.Current()), name_in(file, it.Current())});
+        for (std::size_t k = 0; k < found.size(); ++k) solids.push_back({found[k], names[k]});
         if (solids.empty())
             throw Error("'" + path + "' holds no solid: an assembly is a file of solids that share faces");
         double tolerance = options.glue_tolerance;

@@ -3,6 +3,7 @@
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
@@ -37,9 +38,12 @@ double volume_of(const TopoDS_Shape& s) {
     return props.Mass();
 }
 
+// The box of a solid's vertices, grown by a tenth of its diagonal for faces that bulge past
+// them: a cheap first look (a pipe's B-spline wall takes seconds to box exactly).
 Bnd_Box box_of(const TopoDS_Shape& s) {
     Bnd_Box box;
-    BRepBndLib::AddOptimal(s, box, false, false);
+    for (TopExp_Explorer it(s, TopAbs_VERTEX); it.More(); it.Next()) box.Add(BRep_Tool::Pnt(TopoDS::Vertex(it.Current())));
+    if (!box.IsVoid()) box.Enlarge(0.1 * std::sqrt(box.SquareExtent()));
     return box;
 }
 
@@ -97,22 +101,42 @@ void refuse_overlaps(const std::vector<NamedSolid>& in, const std::vector<std::v
     }
 }
 
-// Two solids that share no face but come closer than kGapShare of their size: a gap.
+bool meet(const std::vector<int>& a, const std::vector<int>& b) {
+    std::vector<int> common;
+    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+    return !common.empty();
+}
+
+// The faces of `solid` whose boxes reach into `box`, as one compound.
+TopoDS_Compound faces_near(const TopoDS_Solid& solid, const Bnd_Box& box) {
+    TopoDS_Compound c;
+    BRep_Builder builder;
+    builder.MakeCompound(c);
+    for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
+        Bnd_Box face;
+        BRepBndLib::Add(it.Current(), face);
+        if (!face.IsOut(box)) builder.Add(c, it.Current());
+    }
+    return c;
+}
+
+// Two solids that touch nowhere (no vertex in common) but come closer than kGapShare of their
+// size: a gap. Only the faces near the other solid are measured (a pipe's B-spline wall inside
+// a block costs seconds in BRepExtrema and is never the nearest).
 void refuse_gaps(const std::vector<NamedSolid>& in, const std::vector<TopoDS_Solid>& solids,
-                 const std::vector<std::vector<int>>& faces_of, double tolerance) {
+                 const std::vector<std::vector<int>>& faces_of, const std::vector<std::vector<int>>& vertices_of,
+                 double tolerance) {
     std::vector<Bnd_Box> boxes;
     for (const TopoDS_Solid& s : solids) boxes.push_back(box_of(s));
     for (std::size_t i = 0; i < solids.size(); ++i)
         for (std::size_t j = i + 1; j < solids.size(); ++j) {
             const double limit = kGapShare * std::min(diagonal(boxes[i]), diagonal(boxes[j]));
-            Bnd_Box near = boxes[i];
-            near.Enlarge(limit);
-            if (near.IsOut(boxes[j])) continue;
-            std::vector<int> common;
-            std::set_intersection(faces_of[i].begin(), faces_of[i].end(), faces_of[j].begin(), faces_of[j].end(),
-                                  std::back_inserter(common));
-            if (!common.empty()) continue;
-            BRepExtrema_DistShapeShape distance(solids[i], solids[j]);
+            Bnd_Box near_i = boxes[i], near_j = boxes[j];
+            near_i.Enlarge(limit);
+            near_j.Enlarge(limit);
+            if (near_i.IsOut(boxes[j]) || meet(faces_of[i], faces_of[j]) || meet(vertices_of[i], vertices_of[j]))
+                continue;
+            BRepExtrema_DistShapeShape distance(faces_near(solids[i], near_j), faces_near(solids[j], near_i));
             if (!distance.IsDone()) continue;
             const double d = distance.Value();
             if (d > tolerance && d < limit)
@@ -166,7 +190,7 @@ Assembly glue_solids(const std::vector<NamedSolid>& input, double tolerance, Ass
     TopExp::MapShapes(impl->compound, TopAbs_EDGE, impl->edges);
     TopExp::MapShapes(impl->compound, TopAbs_VERTEX, impl->vertices);
 
-    std::vector<std::vector<int>> faces_of;
+    std::vector<std::vector<int>> faces_of, vertices_of;
     for (std::size_t k = 0; k < solids.size(); ++k) {
         const std::string problems = validity_problems(solids[k]);
         if (!problems.empty())
@@ -187,9 +211,12 @@ Assembly glue_solids(const std::vector<NamedSolid>& input, double tolerance, Ass
         std::vector<int> sorted = part.face_ids;
         std::sort(sorted.begin(), sorted.end());
         faces_of.push_back(std::move(sorted));
+        sorted = part.vertex_ids;
+        std::sort(sorted.begin(), sorted.end());
+        vertices_of.push_back(std::move(sorted));
         impl->solids.push_back(std::move(part));
     }
-    refuse_gaps(in, solids, faces_of, tolerance);
+    refuse_gaps(in, solids, faces_of, vertices_of, tolerance);
 
     for (std::size_t i = 0; i < solids.size(); ++i)
         for (std::size_t j = i + 1; j < solids.size(); ++j) {

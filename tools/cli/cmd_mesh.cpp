@@ -214,6 +214,7 @@ Command add_mesh_command(CLI::App& app) {
         try {
             if (args->assembly) {
                 if (args->input.empty()) throw Error("--assembly needs a CAD file IN");
+                if (until != kLastStage) throw Error("--assembly meshes every stage: leave --until out");
                 assembly = geom::mesh_assembly_file(args->input, options, {.glue_tolerance = args->glue_tolerance});
                 meshed = std::move(assembly->run);
             } else if (args->input.empty()) {

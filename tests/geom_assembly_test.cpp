@@ -144,10 +144,30 @@ TEST(GeomAssembly, OverlapIsAnError) {
     EXPECT_NE(msg.find("overlap"), std::string::npos) << msg;
 }
 
-TEST(GeomAssembly, PipeCrossingAJointIsRefusedForNow) {
+std::vector<std::string> surface_groups_of(const AssemblyRun& run) { return run.run.result.mesh.surface_group_names; }
+
+bool has(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+TEST(GeomAssembly, PipeThroughTheJointIsOnePipe) {
     const Assembly a = glue({piped_box(0, true), piped_box(1, true)});
-    const std::string msg = error_of([&] { mesh_assembly(a, small_run()); });
-    EXPECT_NE(msg.find("cross from one solid into the next"), std::string::npos) << msg;
+    const AssemblyRun run = mesh_assembly(a, small_run());
+    expect_conforming(run, a);
+    const HybridMesh& mesh = run.run.result.mesh;
+    const std::vector<std::string> groups = surface_groups_of(run);
+    EXPECT_TRUE(has(groups, "pipe_1"));
+    EXPECT_FALSE(has(groups, "pipe_2"));  // the second piece is the same pipe
+    EXPECT_TRUE(has(groups, "joint_solid_1_solid_2"));
+    EXPECT_GT(run.solids[0].hexes, 0u);
+    EXPECT_EQ(run.solids[0].hexes, run.solids[1].hexes);
+    // The joint's quads (the ring's cross-section) and triangles are interior faces, stored once.
+    index_t joint_quads = 0;
+    const FaceBlock& quads = mesh.block(FaceKind::Quad);
+    for (index_t g : quads.group) joint_quads += mesh.surface_group_names[g] == "joint_solid_1_solid_2";
+    EXPECT_GT(joint_quads, 0u);
+    // Two rims (inlet and outlet), none at the joint.
+    EXPECT_EQ(run.run.result.description.node_sets.size(), 2u);
 }
 
 TEST(GeomAssembly, StepKeepsTheSolidsNames) {

@@ -31,13 +31,19 @@ struct SolidWork {
     double seconds = 0;
 };
 
-// The B-rep face of every boundary triangle of the whole mesh, from its group "face_<id>".
-std::vector<index_t> triangle_faces(const HybridMesh& mesh) {
-    std::vector<index_t> face_of_group(mesh.surface_group_names.size(), 0);
-    for (std::size_t g = 0; g < face_of_group.size(); ++g) {
+// The B-rep face behind every surface group "face_<id>"; 0 for the others.
+std::vector<index_t> face_of_groups(const HybridMesh& mesh) {
+    std::vector<index_t> out(mesh.surface_group_names.size(), 0);
+    for (std::size_t g = 0; g < out.size(); ++g) {
         const std::string& name = mesh.surface_group_names[g];
-        if (name.rfind("face_", 0) == 0) face_of_group[g] = static_cast<index_t>(std::stoul(name.substr(5)));
+        if (name.rfind("face_", 0) == 0) out[g] = static_cast<index_t>(std::stoul(name.substr(5)));
     }
+    return out;
+}
+
+// The B-rep face of every boundary triangle of the whole mesh.
+std::vector<index_t> triangle_faces(const HybridMesh& mesh) {
+    const std::vector<index_t> face_of_group = face_of_groups(mesh);
     const FaceBlock& tris = mesh.block(FaceKind::Tri);
     std::vector<index_t> out(tris.group.size());
     for (std::size_t t = 0; t < out.size(); ++t) out[t] = face_of_group[tris.group[t]];
@@ -161,24 +167,59 @@ HybridMesh region_mesh(const HybridMesh& mesh, index_t region) {
     return out;
 }
 
-// Shared faces' triangles are interior now: out of the boundary faces.
-index_t drop_shared_triangles(const AssemblyInput& in, const std::vector<index_t>& tri_face, HybridMesh& mesh) {
-    std::unordered_map<index_t, int> solids_of_face;
-    for (const AssemblySolidInput& s : in.solids)
-        for (index_t f : s.faces) ++solids_of_face[f];
-    FaceBlock& tris = mesh.block(FaceKind::Tri);
-    FaceBlock kept;
-    index_t dropped = 0;
-    for (std::size_t t = 0; t < tri_face.size(); ++t) {
-        if (solids_of_face[tri_face[t]] > 1) {
-            ++dropped;
-            continue;
-        }
-        kept.nodes.insert(kept.nodes.end(), tris.nodes.begin() + 3 * t, tris.nodes.begin() + 3 * t + 3);
-        kept.group.push_back(tris.group[t]);
+// A shared face's triangles and ring end quads are interior faces now: they go to the interface
+// group "joint_<A>_<B>" of its two solids. Returns the triangles moved.
+index_t group_shared_faces(const AssemblyInput& in, HybridMesh& mesh) {
+    std::unordered_map<index_t, std::vector<index_t>> solids_of_face;
+    for (std::size_t k = 0; k < in.solids.size(); ++k)
+        for (index_t f : in.solids[k].faces) solids_of_face[f].push_back(static_cast<index_t>(k));
+    const std::vector<index_t> face_of_group = face_of_groups(mesh);
+    std::vector<index_t> to(face_of_group.size());
+    for (std::size_t g = 0; g < to.size(); ++g) {
+        to[g] = static_cast<index_t>(g);
+        const auto it = solids_of_face.find(face_of_group[g]);
+        if (face_of_group[g] == 0 || it == solids_of_face.end() || it->second.size() < 2) continue;
+        to[g] = mesh.surface_group_id("joint_" + in.solids[it->second[0]].name + "_" + in.solids[it->second[1]].name);
     }
-    tris = std::move(kept);
-    return dropped;
+    index_t moved = 0;
+    for (int k = 0; k < kFaceKindCount; ++k)
+        for (index_t& g : mesh.faces[k].group)
+            if (to[g] != g) {
+                g = to[g];
+                moved += k == static_cast<int>(FaceKind::Tri);
+            }
+    return moved;
+}
+
+// Points no cell uses (the second cross-section of two joined rings) leave; the others keep
+// their order.
+void drop_unused_points(HybridMesh& mesh, MeshDescription& description) {
+    std::vector<char> used(mesh.point_count(), 0);
+    for (const CellBlock& b : mesh.cells)
+        for (index_t v : b.nodes) used[v] = 1;
+    std::vector<index_t> to(used.size(), kNoIndex);
+    index_t next = 0;
+    for (std::size_t p = 0; p < used.size(); ++p) {
+        if (!used[p]) continue;
+        mesh.x[next] = mesh.x[p];
+        mesh.y[next] = mesh.y[p];
+        mesh.z[next] = mesh.z[p];
+        to[p] = next++;
+    }
+    if (next == used.size()) return;
+    mesh.x.resize(next);
+    mesh.y.resize(next);
+    mesh.z.resize(next);
+    for (CellBlock& b : mesh.cells)
+        for (index_t& v : b.nodes) v = to[v];
+    for (FaceBlock& b : mesh.faces)
+        for (index_t& v : b.nodes) v = to[v];
+    for (NamedNodeSet& set : description.node_sets) {
+        std::vector<index_t> kept;
+        for (index_t v : set.nodes)
+            if (to[v] != kNoIndex) kept.push_back(to[v]);
+        set.nodes = std::move(kept);
+    }
 }
 
 // Surface groups left without faces (the shared faces') go; the others keep their order.
@@ -254,8 +295,9 @@ AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& optio
             const TubeRing& ring = r.sweep.rings[t];
             std::fill_n(hexes.region.begin() + ring.first_hex, ring.hex_count, static_cast<index_t>(k));
         }
-    out.shared_triangles = drop_shared_triangles(input, tri_face, r.mesh);
+    out.shared_triangles = group_shared_faces(input, r.mesh);
     drop_empty_groups(r.mesh);
+    drop_unused_points(r.mesh, r.description);
 
     index_t pyramid_total = 0, tet_total = 0;
     for (SolidSummary& s : out.solids) {

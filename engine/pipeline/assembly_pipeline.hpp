@@ -8,8 +8,11 @@
 //    those of a face it sees reversed turned round), the solids side by side on the threads,
 //    each in a mesh of its own that is merged back in solid order, so the result is the same
 //    for any thread count.
+// A pipe that crosses from one solid into the next is two tubes whose rings are joined on the
+// shared face (PipelineInput::ring_joins): one cross-section there, one wall group.
 // The cells' regions are the solids (region k = solid k, named after it); a shared face's
-// triangles are interior faces of the result and leave the boundary faces.
+// triangles and ring end quads are interior faces of the result, in the interface group
+// "joint_<A>_<B>" of its two solids (hybrid_mesh.hpp).
 #include <string>
 #include <vector>
 
@@ -44,7 +47,7 @@ struct SolidSummary {
 struct AssemblyResult {
     PipelineResult result;  // the one mesh; phases sweep, surface, pyramids, tets
     std::vector<SolidSummary> solids;
-    index_t shared_triangles = 0;  // interior triangles on the shared faces
+    index_t shared_triangles = 0;  // triangles on the shared faces (joint groups)
 };
 
 // Throws tubemesh::Error from the first phase that fails, naming the solid.

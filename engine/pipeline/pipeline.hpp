@@ -53,6 +53,7 @@
 #include "engine/quality/quality.hpp"
 #include "engine/surface/face_mesher.hpp"
 #include "engine/surface/size_field.hpp"
+#include "engine/sweep/ring_joins.hpp"
 #include "engine/sweep/sweep.hpp"
 #include "engine/tets/tet_step.hpp"
 
@@ -135,6 +136,10 @@ struct PipelineInput {
     const DiscreteGeometry& geometry;
     SurfaceLookup surfaces;           // face id -> its SurfaceMap (must outlive run_pipeline)
     std::vector<PipelineFace> faces;  // every face of the model, in id order
+    // Tubes that continue through a face (an assembly's pipe crossing a joint): their rings are
+    // made one there right after the sweep (engine/sweep/ring_joins.hpp). The nodes they leave
+    // unused stay in the mesh; the caller drops them. Empty for one solid.
+    std::vector<RingJoin> ring_joins;
 };
 
 // One phase of a run: the engine's phases (run_pipeline) and, before them, geom's (import,

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <numeric>
 #include <unordered_set>
 
 #include "engine/pipeline/stage_check.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/pipeline/thread_limit.hpp"
 #include "geom/assembly/assembly_occt.hpp"
 #include "geom/describe_groups.hpp"
@@ -100,18 +102,107 @@ std::vector<PhaseReport> summed_phases(const std::vector<PreparedModel>& prepare
     return out;
 }
 
-// A pipe that ends on a face its solid shares runs on into the next solid: not meshed yet.
-void refuse_pipes_across_joints(const Assembly& a, const std::vector<PreparedModel>& prepared) {
-    for (const SharedFace& f : a.shared_faces())
-        for (std::size_t k = 0; k < prepared.size(); ++k)
-            for (const TubeInfo& t : prepared[k].tubes.tubes)
-                for (int host : t.hosts)
-                    if (a.solids()[k].face_ids[static_cast<std::size_t>(host) - 1] == f.face)
-                        throw Error(fmt::format(
-                            "a pipe of '{}' ends on face_{}, which it shares with '{}': pipes that cross from one solid "
-                            "into the next are not meshed yet; mesh the solids one by one (--solid) or end the pipe "
-                            "on an outer face",
-                            a.solids()[k].name, f.face, a.solids()[k == std::size_t(f.first) ? f.second : f.first].name));
+// The ends of tubes on shared faces, paired by face and end loop: each pair is one pipe running
+// from one solid into the next. Tubes are numbered solid by solid, as mesh_assembly lays them.
+std::vector<RingJoin> find_ring_joins(const Assembly& a, const std::vector<PreparedModel>& prepared) {
+    std::map<int, const SharedFace*> shared;
+    for (const SharedFace& f : a.shared_faces()) shared[f.face] = &f;
+    struct End {
+        index_t tube;
+        int end;
+        std::size_t solid;
+    };
+    std::map<std::pair<int, std::vector<int>>, std::vector<End>> ends;
+    index_t tube = 0;
+    for (std::size_t k = 0; k < prepared.size(); ++k) {
+        const AssemblySolid& s = a.solids()[k];
+        for (const TubeInfo& t : prepared[k].tubes.tubes) {
+            for (int e = 0; e < 2; ++e) {
+                const int host = global(s.face_ids, t.hosts[static_cast<std::size_t>(e)]);
+                if (!shared.count(host)) continue;
+                std::vector<int> loop = t.loops[static_cast<std::size_t>(e)];
+                to_global(s.edge_ids, loop);
+                std::sort(loop.begin(), loop.end());
+                ends[{host, loop}].push_back({tube, e, k});
+            }
+            ++tube;
+        }
+    }
+    std::vector<RingJoin> joins;
+    for (const auto& [key, list] : ends) {
+        const SharedFace& f = *shared[key.first];
+        if (list.size() != 2 || list[0].solid == list[1].solid) {
+            const std::size_t k = list[0].solid;
+            throw Error(fmt::format("a pipe of '{}' ends on face_{}, which it shares with '{}', and does not run on "
+                                    "into it there: continue the pipe through the joint or end it on an outer face",
+                                    a.solids()[k].name, f.face,
+                                    a.solids()[k == std::size_t(f.first) ? f.second : f.first].name));
+        }
+        joins.push_back({list[0].tube, list[1].tube, list[0].end, list[1].end});
+    }
+    std::sort(joins.begin(), joins.end(), [](const RingJoin& x, const RingJoin& y) {
+        return std::pair(x.tube_a, x.end_a) < std::pair(y.tube_a, y.end_a);
+    });
+    return joins;
+}
+
+// Solid k's index for every tube, numbered as find_ring_joins does.
+std::vector<std::size_t> solid_of_tubes(const std::vector<PreparedModel>& prepared) {
+    std::vector<std::size_t> out;
+    for (std::size_t k = 0; k < prepared.size(); ++k) out.insert(out.end(), prepared[k].tubes.tubes.size(), k);
+    return out;
+}
+
+// The two pieces of a pipe are one ring at the joint, so they need one St: the solids a pipe
+// links take the smallest St among them and are prepared again at it.
+void one_sweep_size_per_pipe(const Assembly& a, const MeshOptions& options, const std::vector<RingJoin>& joins,
+                             std::vector<PreparedModel>& prepared) {
+    const std::vector<std::size_t> solid = solid_of_tubes(prepared);
+    std::vector<std::size_t> head(prepared.size());
+    std::iota(head.begin(), head.end(), std::size_t{0});
+    const auto find = [&](std::size_t k) {
+        while (head[k] != k) k = head[k] = head[head[k]];
+        return k;
+    };
+    for (const RingJoin& j : joins) {
+        const std::size_t x = find(solid[j.tube_a]), y = find(solid[j.tube_b]);
+        head[std::max(x, y)] = std::min(x, y);
+    }
+    std::vector<double> least(prepared.size(), 0);
+    for (std::size_t k = 0; k < prepared.size(); ++k) {
+        const double st = prepared[k].geometry.sweep_size;
+        double& l = least[find(k)];
+        if (st > 0 && (l == 0 || st < l)) l = st;
+    }
+    for (std::size_t k = 0; k < prepared.size(); ++k) {
+        const double st = least[find(k)];
+        if (prepared[k].geometry.tubes.empty() || prepared[k].geometry.sweep_size == st) continue;
+        PrepareOptions o = prepare_options(options);
+        o.sizing.size = prepared[k].plan.size;
+        o.sizing.sweep_size = st;
+        prepared[k] = prepare_model(a.solids()[k].model, o);
+    }
+}
+
+// b's end ring on the joint becomes a's, started at the node nearest b's own node 0 and turning
+// b's way: the sweep then places both pieces' cross-sections there from the same points.
+void share_joint_rings(std::vector<TubeData>& tubes, const std::vector<RingJoin>& joins) {
+    for (const RingJoin& j : joins) {
+        const std::vector<Vec3>& ra = j.end_a == 0 ? tubes[j.tube_a].ring1 : tubes[j.tube_a].ring2;
+        std::vector<Vec3>& rb = j.end_b == 0 ? tubes[j.tube_b].ring1 : tubes[j.tube_b].ring2;
+        const std::size_t n = ra.size();
+        if (rb.size() != n || n < 3)
+            throw Error(fmt::format("the two pieces of a pipe crossing a joint (tubes {} and {}) have {} and {} nodes "
+                                    "around: give them one St",
+                                    j.tube_a + 1, j.tube_b + 1, n, rb.size()));
+        std::size_t k0 = 0;
+        for (std::size_t k = 1; k < n; ++k)
+            if (distance2(ra[k], rb[0]) < distance2(ra[k0], rb[0])) k0 = k;
+        const bool same_way = distance2(ra[(k0 + 1) % n], rb[1]) <= distance2(ra[(k0 + n - 1) % n], rb[1]);
+        std::vector<Vec3> ring(n);
+        for (std::size_t k = 0; k < n; ++k) ring[k] = ra[same_way ? (k0 + k) % n : (k0 + n - k) % n];
+        rb = std::move(ring);
+    }
 }
 
 }  // namespace
@@ -119,8 +210,9 @@ void refuse_pipes_across_joints(const Assembly& a, const std::vector<PreparedMod
 AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
     const auto limit = limit_threads(options.threads);
     const std::vector<AssemblySolid>& solids = a.solids();
-    const std::vector<PreparedModel> prepared = prepare_solids(a, options);
-    refuse_pipes_across_joints(a, prepared);
+    std::vector<PreparedModel> prepared = prepare_solids(a, options);
+    const std::vector<RingJoin> joins = find_ring_joins(a, prepared);
+    if (!joins.empty()) one_sweep_size_per_pipe(a, options, joins, prepared);
 
     DiscreteGeometry geometry;
     geometry.size = prepared.front().geometry.size;
@@ -150,6 +242,8 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
         input.solids.push_back(std::move(in));
     }
     for (auto& [id, e] : edges) geometry.edges.push_back(std::move(e));
+    share_joint_rings(geometry.tubes, joins);
+    input.whole.ring_joins = joins;
 
     const Model whole = whole_model(a);
     const std::vector<std::unique_ptr<SurfaceMap>> maps = make_surface_maps(whole);
@@ -181,6 +275,8 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
         for (const std::string& w : prepared[k].warnings) r.warnings.push_back(solids[k].name + ": " + w);
     if (options.check) check_result(r, options.progress);
     describe_groups(whole, tube_search, r.mesh, r.description);
+    for (std::size_t g = 0; g < r.mesh.surface_group_names.size(); ++g)
+        if (is_interface_group(r.mesh.surface_group_names[g])) r.description.surface_groups[g].alias = "joint";
 
     run.source = a.report().source;
     run.format = a.report().format;

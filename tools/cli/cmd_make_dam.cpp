@@ -86,6 +86,10 @@ Command add_make_dam_command(CLI::App& app) {
     cmd->add_flag("--assembled", a->assembled,
                   "Also write DIR/section.step: the blocks glued into one assembly (solids block_C_L, faces "
                   "shared), every block with a pipe; mesh it with tubemesh mesh --assembly");
+    cmd->add_option("--crossing-pipes", a->dam.crossing_pipes,
+                    "Straight pipes along the dam's axis, each through every column of one lift a quarter up it, "
+                    "crossing the column joints; each block holds its piece (default 0)")
+        ->check(CLI::NonNegativeNumber);
     add_range(cmd, "--width", a->dam.width, "Column width along the dam's axis, drawn per column");
     add_range(cmd, "--depth", a->dam.depth, "Column depth, upstream to downstream, drawn per column");
     add_range(cmd, "--lift-height", a->dam.lift_height, "Lift height, drawn per block");
@@ -135,7 +139,7 @@ Command add_make_dam_command(CLI::App& app) {
             }
             e["info"] = block_info(b);
             entries.push_back(std::move(e));
-            pipes += static_cast<int>(b.spec.pipes.size());
+            pipes += !b.spec.pipes.empty();
         }
         const nlohmann::json manifest = {
             {"tubemesh_batch", 1},

@@ -275,8 +275,6 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
         for (const std::string& w : prepared[k].warnings) r.warnings.push_back(solids[k].name + ": " + w);
     if (options.check) check_result(r, options.progress);
     describe_groups(whole, tube_search, r.mesh, r.description);
-    for (std::size_t g = 0; g < r.mesh.surface_group_names.size(); ++g)
-        if (is_interface_group(r.mesh.surface_group_names[g])) r.description.surface_groups[g].alias = "joint";
 
     run.source = a.report().source;
     run.format = a.report().format;

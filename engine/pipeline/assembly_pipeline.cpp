@@ -28,7 +28,7 @@ struct SolidWork {
     std::vector<index_t> tet_front;
     PyramidStats pyramid_stats;
     tets::TetStepStats tet_stats;
-    double seconds = 0;
+    double pyramid_seconds = 0, tet_seconds = 0;
 };
 
 // The B-rep face behind every surface group "face_<id>"; 0 for the others.
@@ -107,7 +107,7 @@ void run_solid_pyramids(SolidWork& w, const MeshOptions& opt) {
     for (std::size_t t = 0; t < covered.size(); ++t)
         if (!covered[t]) w.tet_front.insert(w.tet_front.end(), w.boundary.begin() + 3 * t, w.boundary.begin() + 3 * t + 3);
     w.pyramid_stats = p.stats;
-    w.seconds += seconds_since(t0);
+    w.pyramid_seconds = seconds_since(t0);
 }
 
 void run_solid_tets(SolidWork& w, const MeshOptions& opt, double far_size) {
@@ -116,7 +116,7 @@ void run_solid_tets(SolidWork& w, const MeshOptions& opt, double far_size) {
     to.far_size = far_size;
     to.threads = 0;
     w.tet_stats = tets::build_tets(w.mesh, w.tet_front, 0, to);
-    w.seconds += seconds_since(t0);
+    w.tet_seconds = seconds_since(t0);
 }
 
 // Runs `step` on every solid side by side; an error names the solid.
@@ -275,7 +275,8 @@ AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& optio
         s.name = input.solids[k].name;
         s.pyramids = w.pyramid_stats.pyramids;
         s.tets = w.tet_stats.tets;
-        s.seconds = w.seconds;
+        s.pyramid_seconds = w.pyramid_seconds;
+        s.tet_seconds = w.tet_seconds;
         s.tet_stats = w.tet_stats;
         out.solids.push_back(std::move(s));
         apexes += w.pyramid_stats.ideal + w.pyramid_stats.wide;
@@ -319,6 +320,10 @@ AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& optio
         const HybridMesh part = region_mesh(r.mesh, static_cast<index_t>(k));
         SolidSummary& s = out.solids[k];
         s.hexes = part.cell_count(CellKind::Hex);
+        std::vector<char> used(part.point_count(), 0);
+        for (const CellBlock& b : part.cells)
+            for (index_t v : b.nodes) used[v] = 1;
+        s.nodes = static_cast<index_t>(std::count(used.begin(), used.end(), 1));
         s.quality = summarize_quality(part);
         s.volume = check_mesh(part).volume;
     }

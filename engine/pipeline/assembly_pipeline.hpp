@@ -38,9 +38,12 @@ struct AssemblyInput {
 struct SolidSummary {
     std::string name;
     index_t hexes = 0, pyramids = 0, tets = 0;
+    index_t nodes = 0;  // of its cells, those on its shared faces included
     QualitySummary quality;
-    double volume = 0;   // of its cells (check_mesh's volumes)
-    double seconds = 0;  // its pyramids and tets, on the threads it had
+    double volume = 0;  // of its cells (check_mesh's volumes)
+    // Its pyramids and its tets, each on the thread it had; the sweep and the surface are the
+    // whole assembly's.
+    double pyramid_seconds = 0, tet_seconds = 0;
     tets::TetStepStats tet_stats;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// The report of an assembly run beside the whole mesh's (mesh_report.hpp): per solid its cells,
-// quality, volume against the CAD's and time; the shared faces; the volume check over the whole.
+// The report of an assembly run beside the whole mesh's (mesh_report.hpp): Table 1 with a column
+// per solid and one for the whole, each solid's volume against the CAD's, the shared faces and
+// the volume check over the whole.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace tubemesh::run {
 // lost), over the sum.
 double volume_mismatch(const geom::AssemblyRun& run, const geom::MeshRun& whole);
 
-// One row per solid and a total row, as text.
+// Table 1 per solid and in total, as text.
 std::vector<std::string> assembly_lines(const geom::AssemblyRun& run, const geom::MeshRun& whole);
 
 // The same as JSON: {"solids": [...], "shared_faces", "shared_triangles", "glue_tolerance", ...}.

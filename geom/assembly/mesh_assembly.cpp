@@ -87,15 +87,17 @@ std::vector<PreparedModel> prepare_solids(const Assembly& a, const MeshOptions& 
     return prepared;
 }
 
-// geom's phases summed over the solids (their S and St: the smallest).
+// geom's phases summed over the solids (their S and St, and counts of the fewest: the smallest).
 std::vector<PhaseReport> summed_phases(const std::vector<PreparedModel>& prepared) {
     std::vector<PhaseReport> out = prepared.front().phases;
     for (std::size_t k = 1; k < prepared.size(); ++k)
         for (std::size_t i = 0; i < out.size() && i < prepared[k].phases.size(); ++i) {
             const PhaseReport& p = prepared[k].phases[i];
             out[i].seconds += p.seconds;
-            for (std::size_t c = 0; c < out[i].counts.size() && c < p.counts.size(); ++c)
-                out[i].counts[c].second += p.counts[c].second;
+            for (std::size_t c = 0; c < out[i].counts.size() && c < p.counts.size(); ++c) {
+                auto& [name, value] = out[i].counts[c];
+                value = name.ends_with("(fewest)") ? std::min(value, p.counts[c].second) : value + p.counts[c].second;
+            }
             for (std::size_t c = 0; c < out[i].statistics.size() && c < p.statistics.size(); ++c)
                 out[i].statistics[c].second = std::min(out[i].statistics[c].second, p.statistics[c].second);
         }

@@ -126,6 +126,13 @@ void expect_patch_test(const Meshed& m, const TempDir& dir) {
     EXPECT_LT(patch["relative_error"].get<double>(), 1e-6);
 }
 
+// `tubemesh make-dam OPTIONS --assembled` into dir, and its section.step meshed.
+Meshed dam_section(const TempDir& dir, const std::string& options) {
+    const auto made = run_command(cli() + " make-dam " + options + " --assembled --quiet -o " + q(dir.path()));
+    EXPECT_EQ(made.exit_code, 0) << made.err;
+    return mesh_assembly(dir, dir / "section.step", "");
+}
+
 #ifndef TUBEMESH_ASSEMBLY_HEAVY
 
 TopoDS_Solid box(gp_Pnt lo, gp_Pnt hi) { return BRepPrimAPI_MakeBox(lo, hi).Solid(); }
@@ -197,11 +204,8 @@ TEST(CliAssembly, ThreeSolidsMeetingAtAnEdge) {
 
 TEST(CliAssembly, DamSectionWithAPipeAcrossTheColumnJoint) {
     TempDir dir;
-    const auto made = run_command(cli() + " make-dam --columns 2 --lifts 1 --width 4 --depth 3 --lift-height 1 "
-                                          "--spacing 1 --diameter 0.05 --crossing-pipes 1 --assembled --quiet -o " +
-                                  q(dir.path()));
-    ASSERT_EQ(made.exit_code, 0) << made.err;
-    const Meshed m = mesh_assembly(dir, dir / "section.step", "");
+    const Meshed m = dam_section(dir, "--columns 2 --lifts 1 --width 4 --depth 3 --lift-height 1 --spacing 1 "
+                                      "--diameter 0.05 --crossing-pipes 1");
     expect_assembly(m, {"block_1_1", "block_2_1"}, {"joint_block_1_1_block_2_1"});
     // Two serpentines and the crossing pipe, which is one group through both blocks.
     EXPECT_EQ(starting_with(m.surfaces, "pipe_").size(), 3u);
@@ -238,11 +242,8 @@ TEST(CliAssembly, PipeEndingOnAJointIsExit2AndNoFile) {
 // and two straight pipes, each through the three columns of a lift.
 TEST(CliAssemblyHeavy, DamSection3x3) {
     TempDir dir;
-    const auto made = run_command(cli() + " make-dam --columns 3 --lifts 3 --width 20 --depth 15 --lift-height 3 "
-                                          "--diameter 0.032 --crossing-pipes 2 --assembled --quiet -o " +
-                                  q(dir.path()));
-    ASSERT_EQ(made.exit_code, 0) << made.err;
-    const Meshed m = mesh_assembly(dir, dir / "section.step", "");
+    const Meshed m = dam_section(dir, "--columns 3 --lifts 3 --width 20 --depth 15 --lift-height 3 "
+                                      "--diameter 0.032 --crossing-pipes 2");
     std::vector<std::string> solids;
     for (int c = 1; c <= 3; ++c)
         for (int l = 1; l <= 3; ++l) solids.push_back("block_" + std::to_string(c) + "_" + std::to_string(l));

@@ -215,6 +215,7 @@ Command add_mesh_command(CLI::App& app) {
             if (args->assembly) {
                 if (args->input.empty()) throw Error("--assembly needs a CAD file IN");
                 if (until != kLastStage) throw Error("--assembly meshes every stage: leave --until out");
+                if (args->settings.solid) throw Error("--assembly meshes every solid: leave --solid out");
                 assembly = geom::mesh_assembly_file(args->input, options, {.glue_tolerance = args->glue_tolerance});
                 meshed = std::move(assembly->run);
             } else if (args->input.empty()) {

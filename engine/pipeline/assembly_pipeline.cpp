@@ -166,17 +166,23 @@ void merge_solids(std::vector<SolidWork>& work, HybridMesh& mesh) {
     }
 }
 
-// The cells of one region, with every point of the mesh: for per-solid measures.
+// The cells of one region and their points alone: for per-solid measures.
 HybridMesh region_mesh(const HybridMesh& mesh, index_t region) {
     HybridMesh out;
-    out.x = mesh.x;
-    out.y = mesh.y;
-    out.z = mesh.z;
     out.region_names = {mesh.region_names[region]};
+    std::vector<index_t> local(mesh.point_count(), kNoIndex);
+    std::vector<index_t> nodes;
     for (int k = 0; k < kCellKindCount; ++k) {
         const CellKind kind = static_cast<CellKind>(k);
-        for (index_t c = 0; c < mesh.cell_count(kind); ++c)
-            if (mesh.block(kind).region[c] == region) out.add_cell(kind, mesh.cell(kind, c), 0);
+        for (index_t c = 0; c < mesh.cell_count(kind); ++c) {
+            if (mesh.block(kind).region[c] != region) continue;
+            nodes.clear();
+            for (index_t v : mesh.cell(kind, c)) {
+                if (local[v] == kNoIndex) local[v] = out.add_point(mesh.x[v], mesh.y[v], mesh.z[v]);
+                nodes.push_back(local[v]);
+            }
+            out.add_cell(kind, nodes, 0);
+        }
     }
     return out;
 }
@@ -330,17 +336,14 @@ AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& optio
     r.phases.push_back(std::move(tets));
     r.reached = Stage::Tets;
 
-    for (std::size_t k = 0; k < out.solids.size(); ++k) {
+    tbb::parallel_for(std::size_t{0}, out.solids.size(), [&](std::size_t k) {
         const HybridMesh part = region_mesh(r.mesh, static_cast<index_t>(k));
         SolidSummary& s = out.solids[k];
         s.hexes = part.cell_count(CellKind::Hex);
-        std::vector<char> used(part.point_count(), 0);
-        for (const CellBlock& b : part.cells)
-            for (index_t v : b.nodes) used[v] = 1;
-        s.nodes = static_cast<index_t>(std::count(used.begin(), used.end(), 1));
+        s.nodes = part.point_count();
         s.quality = summarize_quality(part);
         s.volume = check_mesh(part).volume;
-    }
+    });
     r.quality = summarize_quality(r.mesh);
     for (const PhaseReport& p : r.phases) r.seconds += p.seconds;
     return out;

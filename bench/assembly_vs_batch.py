@@ -4,13 +4,13 @@ make-dam --assembled` writes the section and the blocks' manifest from the same 
 `tubemesh batch` meshes the blocks and `tubemesh mesh --assembly` the section, each on the
 same threads. Compared: element counts per kind (the assembly's over the batch's sum), quality
 per kind (min and cell-weighted mean over the blocks against the assembly's), wall time and
-peak memory. Optionally Gmsh's all-tet mesh of the same section (bench/assembly_gmsh.py).
+peak memory.
 
-  bench/assembly_vs_batch.py [--build-dir build/release] [--threads 2] [--gmsh]
+  bench/assembly_vs_batch.py [--build-dir build/release] [--threads 2] [--work DIR]
                              [--out bench/results/assembly-DATE.json]
       [make-dam options after --, default: the 3 x 3 section of 20 x 15 x 3 lifts]
 
-The 3 x 3 section takes about 8 minutes on 2 cores (both meshings); Gmsh's much longer.
+The 3 x 3 section takes about 6 minutes on 2 cores (make-dam and both meshings).
 """
 import argparse
 import datetime
@@ -100,9 +100,6 @@ def markdown(result):
               f"| wall time | {t['batch_seconds']:.1f} s | {t['assembly_seconds']:.1f} s | {t['ratio']:.2f} |",
               f"| peak memory | {t['batch_peak_mib']:.0f} MiB | {t['assembly_peak_mib']:.0f} MiB | |",
               f"| nodes | {result['batch']['nodes']} | {result['assembly']['nodes']} | |", ""]
-    if "gmsh" in result:
-        lines += ["Gmsh all-tet reference (fragmented solids, 8 segments round each pipe, same far size): "
-                  f"`{json.dumps(result['gmsh'])}`", ""]
     return "\n".join(lines)
 
 
@@ -110,7 +107,6 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build-dir", default="build/release")
     ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--gmsh", action="store_true", help="also run bench/assembly_gmsh.py on the section")
     ap.add_argument("--work", help="folder for the files (default: a temporary one, removed)")
     ap.add_argument("--out", default=f"bench/results/assembly-{datetime.date.today()}.json")
     ap.add_argument("make_dam", nargs="*", default=SECTION)
@@ -140,13 +136,6 @@ def main():
               "times": {"batch_seconds": batch_seconds, "assembly_seconds": assembly_seconds,
                         "ratio": assembly_seconds / batch_seconds, "batch_peak_mib": batch_peak,
                         "assembly_peak_mib": assembly_peak}}
-    if args.gmsh:
-        size = load(report)["sizes"]["S"]
-        here = os.path.dirname(os.path.abspath(__file__))
-        r = subprocess.run(["/usr/bin/python3", os.path.join(here, "assembly_gmsh.py"), os.path.join(dam, "section.step"),
-                            str(size), os.path.join(work, "gmsh.msh"), "--tubemesh", tubemesh,
-                            "--threads", str(args.threads)], capture_output=True, text=True)
-        result["gmsh"] = json.loads(r.stdout) if r.returncode == 0 else {"failed": r.stderr.strip()[-500:]}
     with open(args.out, "w") as f:
         json.dump(result, f, indent=2)
         f.write("\n")

@@ -13,7 +13,12 @@
 #include <StepGeom_GeomRepContextAndGlobUnitAssCtxAndGlobUncertaintyAssCtx.hxx>
 #include <StepGeom_GeometricRepresentationContextAndGlobalUnitAssignedContext.hxx>
 #include <StepRepr_GlobalUnitAssignedContext.hxx>
+#include <StepShape_SolidModel.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
 #include <cctype>
@@ -101,6 +106,15 @@ CadFile read_step(const std::filesystem::path& path) {
     if (reader.NbShapes() == 0)
         throw Error(quoted(path) + " was read as STEP but holds no shape OpenCASCADE can convert (no solid, shell or face)");
     out.shape = reader.OneShape();
+    // Named solids: each named MANIFOLD_SOLID_BREP and the shape it became.
+    const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
+    const Handle(StepData_StepModel) model = reader.StepModel();
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+        const auto item = Handle(StepShape_SolidModel)::DownCast(model->Value(i));
+        if (item.IsNull() || item->Name().IsNull() || item->Name()->Length() == 0) continue;
+        const TopoDS_Shape shape = TransferBRep::ShapeResult(process, item);
+        if (!shape.IsNull()) out.names.emplace_back(shape, item->Name()->ToCString());
+    }
     return out;
 }
 

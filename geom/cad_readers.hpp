@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tubemesh::geom {
@@ -21,6 +22,9 @@ struct CadFile {
     TopoDS_Shape shape;               // everything the file holds, as one (compound) shape
     std::string length_unit;          // as declared, e.g. "millimetre"; "model units" for BREP
     std::vector<std::string> notes;   // unit remarks for the import report
+    // STEP only: the solids the file names (their MANIFOLD_SOLID_BREP's name), in file order, as
+    // the translator made them: the reader's healing may hand `shape` copies of them.
+    std::vector<std::pair<TopoDS_Shape, std::string>> names;
 };
 
 // Coordinates are kept as written in the file: the readers' conversion to millimetres is

@@ -4,6 +4,16 @@
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepRepr_Representation.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <StepShape_ShapeDefinitionRepresentation.hxx>
+#include <StepShape_SolidModel.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TransferBRep.hxx>
+#include <TransferBRep_ShapeMapper.hxx>
+#include <Transfer_FinderProcess.hxx>
+#include <XSControl_TransferWriter.hxx>
+#include <XSControl_WorkSession.hxx>
 
 #include <unistd.h>
 
@@ -43,7 +53,30 @@ const StepUnit& step_unit(const std::string& name) {
 
 }  // namespace
 
-void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& path, const std::string& length_unit) {
+namespace {
+
+// The name of the representation items each shape became: a solid of a compound is written
+// as a shape definition whose representation holds its MANIFOLD_SOLID_BREP.
+void name_items(STEPControl_Writer& writer, std::span<const NamedShape> names) {
+    const Handle(Transfer_FinderProcess) process = writer.WS()->TransferWriter()->FinderProcess();
+    for (const auto& [shape, name] : names) {
+        const Handle(TransferBRep_ShapeMapper) mapper = TransferBRep::ShapeMapper(process, shape);
+        const Handle(Standard_Transient) found = process->FindTransient(mapper);
+        const Handle(TCollection_HAsciiString) text = new TCollection_HAsciiString(name.c_str());
+        if (const auto item = Handle(StepRepr_RepresentationItem)::DownCast(found); !item.IsNull()) {
+            item->SetName(text);
+        } else if (const auto sdr = Handle(StepShape_ShapeDefinitionRepresentation)::DownCast(found); !sdr.IsNull()) {
+            const Handle(StepRepr_Representation) rep = sdr->UsedRepresentation();
+            for (int i = 1; !rep.IsNull() && i <= rep->NbItems(); ++i)
+                if (rep->ItemsValue(i)->IsKind(STANDARD_TYPE(StepShape_SolidModel))) rep->ItemsValue(i)->SetName(text);
+        }
+    }
+}
+
+}  // namespace
+
+void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& path, const std::string& length_unit,
+                      std::span<const NamedShape> names) {
     silence_occt_output();
     const StepUnit& unit = step_unit(length_unit);
     std::filesystem::path tmp = path;
@@ -62,6 +95,7 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
         writer.Model()->SetWriteLengthUnit(unit.millimetres);
         if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
             throw Error("cannot write " + path.string() + ": OpenCASCADE could not translate the shape to STEP");
+        name_items(writer, names);
         if (writer.Write(tmp.c_str()) != IFSelect_RetDone)
             throw Error("cannot write " + path.string() + ": the directory is missing or not writable");
     } catch (const Standard_Failure& e) {

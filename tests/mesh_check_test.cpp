@@ -293,6 +293,23 @@ TEST(MeshCheck, StoredFaceInsideOrReversedIsNotOnCell) {
                                        {Set::BoundaryQuad, 5}}));
 }
 
+TEST(MeshCheck, InterfaceGroupHoldsInteriorFacesOnly) {
+    // "joint_..." groups (an assembly's shared faces) hold interior faces, either way round.
+    HybridMesh m = tubemesh::testing::conforming_patch();
+    const index_t joint = m.surface_group_id("joint_a_b");
+    const index_t first_new = m.face_count(FaceKind::Tri);
+    m.add_face(FaceKind::Tri, std::array<index_t, 3>{4, 5, 12}, joint);
+    m.add_face(FaceKind::Tri, std::array<index_t, 3>{5, 4, 12}, joint);
+    m.add_face(FaceKind::Quad, std::array<index_t, 4>{4, 5, 6, 7}, joint);
+    EXPECT_TRUE(check_mesh(m).ok()) << describe(check_mesh(m));
+    const std::span<const index_t> boundary = m.face(FaceKind::Tri, 0);
+    m.add_face(FaceKind::Tri, std::array<index_t, 3>{boundary[0], boundary[1], boundary[2]}, joint);
+    const CheckReport r = check_mesh(m);
+    ASSERT_EQ(kinds(r), std::vector<ViolationKind>{ViolationKind::BoundaryFaceNotOnCell}) << describe(r);
+    EXPECT_EQ(r.find(ViolationKind::BoundaryFaceNotOnCell)->first,
+              (std::vector<ElementRef>{{Set::BoundaryTri, first_new + 2}}));
+}
+
 TEST(MeshCheck, RemovedStoredFaceIsAllowed) {
     // Stored faces are groups for the solver; they need not cover the whole boundary.
     HybridMesh m = tubemesh::testing::conforming_patch();

@@ -595,13 +595,17 @@ void check_watertight(const Boundary& b, const std::vector<TriRecord>& tris, con
 }
 
 // ---------------------------------------------------------------------------------------------
-// Stored boundary faces: each must be a boundary (free, matched) cell face, same orientation.
+// Stored boundary faces: each must be a boundary (free, matched) cell face, same orientation;
+// an interface group's, an interior face (either way round).
 
 template <int N>
 void check_stored_faces(const HybridMesh& mesh, const std::vector<FaceRecord<N>>& recs,
                         const std::vector<FaceState>& state, ViolationSink& sink) {
     constexpr FaceKind kind = N == 3 ? FaceKind::Tri : FaceKind::Quad;
     constexpr ElementRef::Set set = N == 3 ? ElementRef::Set::BoundaryTri : ElementRef::Set::BoundaryQuad;
+    std::vector<char> interface(mesh.surface_group_names.size(), 0);
+    for (std::size_t g = 0; g < interface.size(); ++g) interface[g] = is_interface_group(mesh.surface_group_names[g]);
+    const std::vector<index_t>& groups = mesh.block(kind).group;
     tbb::parallel_for(tbb::blocked_range<index_t>(0, mesh.face_count(kind)), [&](const auto& range) {
         for (index_t i = range.begin(); i != range.end(); ++i) {
             const std::span<const index_t> nodes = mesh.face(kind, i);
@@ -609,9 +613,11 @@ void check_stored_faces(const HybridMesh& mesh, const std::vector<FaceRecord<N>>
             std::copy(nodes.begin(), nodes.end(), cycle.begin());
             const FaceRecord<N> stored = make_record<N>(cycle, 0);
             const auto [lo, hi] = std::equal_range(recs.begin(), recs.end(), stored, key_less<N>);
-            const bool on_cell = !repeats_a_node(nodes) && hi - lo == 1 &&
-                                 state[static_cast<std::size_t>(lo - recs.begin())] == FaceState::Free &&
-                                 form_of(*lo) == form_of(stored);
+            const bool inner = groups[i] < interface.size() && interface[groups[i]];
+            const FaceState found = hi - lo >= 1 ? state[static_cast<std::size_t>(lo - recs.begin())] : FaceState::Free;
+            const bool on_cell = !repeats_a_node(nodes) &&
+                                 (inner ? hi - lo == 2 && found == FaceState::Interior
+                                        : hi - lo == 1 && found == FaceState::Free && form_of(*lo) == form_of(stored));
             if (!on_cell) sink.add(ViolationKind::BoundaryFaceNotOnCell, set, i);
         }
     });

@@ -20,6 +20,7 @@ enum class ViolationKind {
     NonMatchingFace,        // a quad facing triangles (or a triangle facing part of a quad)
     OpenBoundary,           // a boundary edge not on exactly two boundary faces
     BoundaryFaceNotOnCell,  // a stored boundary face that is not a free cell face with outward orientation
+                            // (in an interface group, hybrid_mesh.hpp: not an interior face)
 };
 
 const char* violation_name(ViolationKind kind);

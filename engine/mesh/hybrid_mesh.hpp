@@ -8,6 +8,7 @@
 #include <array>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -26,7 +27,13 @@ struct CellBlock {
     bool operator==(const CellBlock&) const = default;
 };
 
-// Boundary faces of one kind; a face's normal (right-hand rule) points out of the domain.
+// Surface groups named "joint_..." hold interior faces, where two volume groups meet (an
+// assembly's shared faces), for a solver's contact or interface conditions; every other group
+// holds boundary faces.
+inline bool is_interface_group(std::string_view name) { return name.starts_with("joint_"); }
+
+// Boundary faces of one kind; a face's normal (right-hand rule) points out of the domain (an
+// interface group's face: either way).
 struct FaceBlock {
     std::vector<index_t> nodes;
     std::vector<index_t> group;  // index into HybridMesh::surface_group_names

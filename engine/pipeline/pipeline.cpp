@@ -37,12 +37,29 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Each ring's wall nodes at its two end stations, named after the pipe's wall group.
-void add_rims(const SweepResult& sweep, const HybridMesh& mesh, MeshDescription& description) {
+// Nodes of two joined rings closer than this share of St are one node (join_ring_ends).
+constexpr double kRingJoinShare = 1e-6;
+
+// Each ring's wall nodes at its two end stations, named after the pipe's wall group. A joined
+// end is no rim; a pipe of joined rings has its two rims, the second named as the first is not.
+void add_rims(const SweepResult& sweep, const std::vector<RingJoin>& joins, const HybridMesh& mesh,
+              MeshDescription& description) {
+    const auto joined = [&](index_t tube, int end) {
+        return std::any_of(joins.begin(), joins.end(), [&](const RingJoin& j) {
+            return (j.tube_a == tube && j.end_a == end) || (j.tube_b == tube && j.end_b == end);
+        });
+    };
     for (const TubeRing& ring : sweep.rings) {
         const std::string& pipe = mesh.surface_group_names[ring.wall_group];
         for (int e = 0; e < 2; ++e) {
-            NamedNodeSet rim{pipe + (e == 0 ? "_inlet" : "_outlet"), {}};
+            if (joined(ring.tube, e)) continue;
+            std::string name = pipe + (e == 0 ? "_inlet" : "_outlet");
+            const auto named = [&](const std::string& n) {
+                return std::any_of(description.node_sets.begin(), description.node_sets.end(),
+                                   [&](const NamedNodeSet& s) { return s.name == n; });
+            };
+            if (named(name)) name = pipe + (e == 0 ? "_outlet" : "_inlet");
+            NamedNodeSet rim{name, {}};
             const index_t station = e == 0 ? 0 : ring.stations - 1;
             for (index_t k = 0; k < ring.circumferential; ++k) rim.nodes.push_back(ring.node(station, 0, k));
             std::sort(rim.nodes.begin(), rim.nodes.end());
@@ -58,7 +75,10 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
     if (sweep.sweep_size <= 0) sweep.sweep_size = in.geometry.sweep_size;
     sweep.store_boundary_faces = true;
     if (!in.geometry.tubes.empty()) out.sweep = sweep_tubes(out.mesh, in.geometry.tubes, in.surfaces, sweep);
-    add_rims(out.sweep, out.mesh, out.description);
+    const double join_gap = in.ring_joins.empty() ? 0.0
+                                                  : join_ring_ends(out.mesh, out.sweep, in.ring_joins,
+                                                                   kRingJoinShare * sweep.sweep_size);
+    add_rims(out.sweep, in.ring_joins, out.mesh, out.description);
     const SweepStats& s = out.sweep.stats;
     PhaseReport r{"sweep", seconds_since(t0), {}};
     r.counts = {{"tubes", double(s.tubes)},
@@ -66,6 +86,10 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
                 {"hexes", double(s.hexes)},
                 {"outer quads", double(s.outer_quads)}};
     if (s.hexes > 0) r.statistics = {{"min J_m", s.min_scaled_jacobian}, {"max cond", s.max_condition}};
+    if (!in.ring_joins.empty()) {
+        r.counts.emplace_back("rings joined", double(in.ring_joins.size()));
+        r.statistics.emplace_back("ring join gap", join_gap);
+    }
     progress.finish();
     out.phases.push_back(std::move(r));
 }

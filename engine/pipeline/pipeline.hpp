@@ -53,6 +53,7 @@
 #include "engine/quality/quality.hpp"
 #include "engine/surface/face_mesher.hpp"
 #include "engine/surface/size_field.hpp"
+#include "engine/sweep/ring_joins.hpp"
 #include "engine/sweep/sweep.hpp"
 #include "engine/tets/tet_step.hpp"
 
@@ -138,6 +139,10 @@ struct PipelineInput {
     // Sizes the geometry asks for at points the rings and the faces' curvature do not see: the
     // narrow gaps between a hole that is not a tube and a face it passes (geom/gap_sizes.hpp).
     std::vector<SizeSource> gap_sizes;
+    // Tubes that continue through a face (an assembly's pipe crossing a joint): their rings are
+    // made one there right after the sweep (engine/sweep/ring_joins.hpp). The nodes they leave
+    // unused stay in the mesh; the caller drops them. Empty for one solid.
+    std::vector<RingJoin> ring_joins;
 };
 
 // One phase of a run: the engine's phases (run_pipeline) and, before them, geom's (import,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "engine/core/types.hpp"
 #include "geom/builders/random.hpp"
@@ -28,6 +29,41 @@ void mirror_x(PipeSpec& pipe, double width) {
     for (Vec3& p : pipe.points) p.x = width - p.x;
 }
 
+// The pieces of the crossing pipes (DamParams::crossing_pipes): in lift l, a straight pipe at
+// y = half the smallest depth and z a quarter up the lift's height common to all its columns,
+// of the lift's smallest serpentine diameter.
+void add_crossing_pipes(std::vector<DamBlock>& blocks, const DamParams& p) {
+    if (p.crossing_pipes < 0 || p.crossing_pipes > p.lifts)
+        throw Error(fmt::format("a dam of {} lifts takes 0 to {} crossing pipes, one per lift", p.lifts, p.lifts));
+    for (int k = 0; k < p.crossing_pipes; ++k) {
+        const int lift = 1 + k * p.lifts / p.crossing_pipes;
+        double lo = -std::numeric_limits<double>::infinity(), hi = -lo, depth = hi, diameter = p.diameter.lo;
+        bool drawn = false;
+        for (const DamBlock& b : blocks) {
+            if (b.lift != lift) continue;
+            lo = std::max(lo, b.origin.z);
+            hi = std::min(hi, b.origin.z + b.spec.host.size.z);
+            depth = std::min(depth, b.spec.host.size.y);
+            for (const PipeSpec& pipe : b.spec.pipes) {
+                diameter = drawn ? std::min(diameter, pipe.diameter) : pipe.diameter;
+                drawn = true;
+            }
+        }
+        if (!(hi > lo))
+            throw Error(fmt::format("the blocks of lift {} share no height across the columns: no pipe can cross "
+                                    "them (give the lifts one height)", lift));
+        const double z = lo + (hi - lo) / 4, y = depth / 2;
+        for (DamBlock& b : blocks) {
+            if (b.lift != lift) continue;
+            PipeSpec piece;
+            piece.kind = PathKind::Line;
+            piece.diameter = diameter;
+            piece.points = {{0, y, z - b.origin.z}, {b.spec.host.size.x, y, z - b.origin.z}};
+            b.spec.pipes.push_back(piece);
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<DamBlock> dam_blocks(const DamParams& p) {
@@ -43,7 +79,7 @@ std::vector<DamBlock> dam_blocks(const DamParams& p) {
     Random rng(p.seed);
     const int column_digits = static_cast<int>(std::to_string(p.columns).size());
     const int lift_digits = static_cast<int>(std::to_string(p.lifts).size());
-    const bool pipeless_ends = p.columns * p.lifts >= 3;
+    const bool pipeless_ends = p.pipeless_ends && p.columns * p.lifts >= 3;
     std::vector<DamBlock> blocks;
     double x = 0;
     for (int c = 1; c <= p.columns; ++c) {
@@ -79,6 +115,7 @@ std::vector<DamBlock> dam_blocks(const DamParams& p) {
         }
         x += width;
     }
+    add_crossing_pipes(blocks, p);
     return blocks;
 }
 

@@ -31,6 +31,13 @@ struct DamParams {
     Range spacing{1.0, 2.0};     // between neighbouring runs, per block
     // Bend radius per block as a share of its spacing: at most 1/2 (serpentine_spec's limit).
     Range bend_share{0.4, 0.5};
+    // The foundation and crest blocks go without a pipe (below); false gives every block one.
+    bool pipeless_ends = true;
+    // Straight pipes along the dam's axis (x), each through every column of one lift at a
+    // quarter of the lift's common height, below the serpentines: coils laid over a whole lift,
+    // crossing the column joints. Each block a pipe passes holds its piece, from face x- to x+.
+    // At most one per lift; the lifts taken are spread from the lowest up.
+    int crossing_pipes = 0;
 };
 
 struct DamBlock {

@@ -2,8 +2,9 @@
 
   calculix_run.py patch MESH.inp DIR
       Steady heat conduction with T = x + 2y + 3z fixed on every boundary node (every node
-      set of the file but NALL). Linear elements reproduce a linear field exactly, so any
-      misread coordinate, mis-numbered element or hanging node shows as an error.
+      set of the file but NALL and those of interface groups, JOINT_*, which lie inside an
+      assembly). Linear elements reproduce a linear field exactly, so any misread coordinate,
+      mis-numbered element or hanging node (a joint whose sides do not match) shows as an error.
       -> {"nodes", "boundary_nodes", "max_error", "max_abs_t", "relative_error"}
   calculix_run.py thermal MESH.inp DIR PIPE TOP boundary|film
       Steady heat conduction, the pipe wall at 10 and the top at 25: as fixed temperatures on
@@ -104,7 +105,8 @@ def write(directory, name, text):
 
 def patch(mesh_path, directory):
     nodes, node_sets, _ = parse_inp(mesh_path)
-    boundary = sorted({n for name, labels in node_sets.items() if name != "NALL" for n in labels})
+    fixed = [name for name in node_sets if name != "NALL" and "JOINT_" not in name]
+    boundary = sorted({n for name in fixed for n in node_sets[name]})
     exact = {n: x + 2 * y + 3 * z for n, (x, y, z) in nodes.items()}
     lines = "".join(f"{n}, 11, 11, {exact[n]:.14g}\n" for n in boundary)
     place(mesh_path, directory, "mesh.inp")

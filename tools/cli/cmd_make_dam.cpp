@@ -6,11 +6,13 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "engine/core/types.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "geom/assembly/dam_section.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/dam.hpp"
 #include "geom/builders/spec_json.hpp"
@@ -27,6 +29,7 @@ struct MakeDamArgs {
     geom::DamParams dam;
     std::string outdir;
     bool specs = false;
+    bool assembled = false;
     double size = 0, sweep_size = 0;
     std::vector<std::string> formats;
     bool quiet = false;
@@ -80,6 +83,13 @@ Command add_make_dam_command(CLI::App& app) {
     cmd->add_option("--seed", a->dam.seed, "The same seed gives the same dam (default 1)");
     cmd->add_option("-o,--output", a->outdir, "Folder for manifest.json and the blocks' files (created)");
     cmd->add_flag("--specs", a->specs, "Write a builder spec (JSON) per block instead of a STEP file");
+    cmd->add_flag("--assembled", a->assembled,
+                  "Also write DIR/section.step: the blocks glued into one assembly (solids block_C_L, faces "
+                  "shared), every block with a pipe; mesh it with tubemesh mesh --assembly");
+    cmd->add_option("--crossing-pipes", a->dam.crossing_pipes,
+                    "Straight pipes along the dam's axis, each through every column of one lift a quarter up it, "
+                    "crossing the column joints; each block holds its piece (default 0)")
+        ->check(CLI::NonNegativeNumber);
     add_range(cmd, "--width", a->dam.width, "Column width along the dam's axis, drawn per column");
     add_range(cmd, "--depth", a->dam.depth, "Column depth, upstream to downstream, drawn per column");
     add_range(cmd, "--lift-height", a->dam.lift_height, "Lift height, drawn per block");
@@ -100,7 +110,11 @@ Command add_make_dam_command(CLI::App& app) {
 
     return {cmd, [a]() -> int {
         if (a->outdir.empty()) throw Error("make-dam needs -o DIR");
+        if (a->assembled) a->dam.pipeless_ends = false;
         const std::vector<geom::DamBlock> blocks = geom::dam_blocks(a->dam);  // Error -> exit 2
+        // Built and glued first: a section that does not glue leaves no file.
+        std::optional<geom::Assembly> section;
+        if (a->assembled) section = geom::build_dam_section(blocks);
         const fs::path dir = a->outdir;
         std::error_code ec;
         fs::create_directories(dir, ec);
@@ -125,7 +139,7 @@ Command add_make_dam_command(CLI::App& app) {
             }
             e["info"] = block_info(b);
             entries.push_back(std::move(e));
-            pipes += static_cast<int>(b.spec.pipes.size());
+            pipes += !b.spec.pipes.empty();
         }
         const nlohmann::json manifest = {
             {"tubemesh_batch", 1},
@@ -133,10 +147,14 @@ Command add_make_dam_command(CLI::App& app) {
             {"defaults", defaults},
             {"blocks", entries}};
         write_text(dir / "manifest.json", manifest.dump(2) + "\n");
+        if (section) geom::write_assembly_step(*section, dir / "section.step");
         if (!a->quiet)
             fmt::print("wrote {}: {} blocks ({} columns x {} lifts, {} with a cooling pipe), {}\n",
                        (dir / "manifest.json").string(), blocks.size(), a->dam.columns, a->dam.lifts, pipes,
                        a->specs ? "one builder spec each" : "one STEP file each");
+        if (section && !a->quiet)
+            fmt::print("wrote {}: the {} blocks as one assembly, {} shared faces\n", (dir / "section.step").string(),
+                       section->solids().size(), section->shared_faces().size());
         return 0;
     }};
 }

@@ -20,12 +20,14 @@
 #include <vector>
 
 #include "engine/io/mesh_io.hpp"
+#include "geom/assembly/mesh_assembly.hpp"
 #include "geom/element_budget.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/memory_limit.hpp"
 #include "tools/cli/option_checks.hpp"
 #include "tools/cli/progress_line.hpp"
+#include "tools/run/assembly_report.hpp"
 #include "tools/run/html_report.hpp"
 #include "tools/run/mesh_report.hpp"
 #include "tools/run/mesh_settings.hpp"
@@ -48,6 +50,8 @@ struct MeshArgs {
     std::string until_name = stage_name(kLastStage);
     bool quiet = false;
     bool msh_ascii = false;
+    bool assembly = false;
+    double glue_tolerance = 0;
     std::string inp_family = run::kInpFamilies[0];
     std::string inp_pyramid = run::kInpPyramids[0];
     CLI::Option *size_option = nullptr, *sweep_option = nullptr, *circ_option = nullptr, *threads_option = nullptr,
@@ -73,10 +77,15 @@ void check_outputs(const MeshArgs& a, Stage until) {
 
 // All files or none: every file is complete under a temporary name before any target is
 // replaced, so a failure (or an interrupt) leaves the targets, old files included, as they were.
-void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions options) {
+void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions options,
+               const std::optional<geom::AssemblyRun>& assembly) {
     options.description = &meshed.result.description;
     std::vector<std::pair<std::string, std::string>> texts;
-    if (!a.report.empty()) texts.emplace_back(a.report, run::run_json(meshed, a.outputs).dump(2) + "\n");
+    if (!a.report.empty()) {
+        nlohmann::json report = run::run_json(meshed, a.outputs);
+        if (assembly) report["assembly"] = run::assembly_json(*assembly, meshed);
+        texts.emplace_back(a.report, report.dump(2) + "\n");
+    }
     if (!a.html.empty()) texts.emplace_back(a.html, run::html_report(meshed));
     run::write_all(meshed.result.mesh, a.outputs, options, texts);
 }
@@ -158,6 +167,13 @@ Command add_mesh_command(CLI::App& app) {
                              ->check(whole_in(run::kSolidRange));
     cmd->add_option("--until", args->until_name, "Last stage to run: " + run::stage_names() + " (default: the last)")
         ->option_text("STAGE");
+    cmd->add_flag("--assembly", args->assembly,
+                  "IN holds several solids that share faces (or touch within --glue-tolerance): mesh them as one "
+                  "conforming mesh, a volume group per solid");
+    cmd->add_option("--glue-tolerance", args->glue_tolerance,
+                    "With --assembly: faces of different solids this close are glued (default: 1e-6 of the "
+                    "assembly's bounding-box diagonal); a wider gap or overlap is an error")
+        ->check(positive_number());
     cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
     cmd->add_flag("--msh-ascii", args->msh_ascii, "Write .msh files as text (default: binary)");
     cmd->add_option("--inp-family", args->inp_family,
@@ -194,8 +210,15 @@ Command add_mesh_command(CLI::App& app) {
         // budget refuses most runs that would not fit; this stops the rest with a message.
         const double memory_limit = limit_memory(0.9 * geom::physical_memory_bytes());
         geom::MeshRun meshed;
+        std::optional<geom::AssemblyRun> assembly;
         try {
-            if (args->input.empty()) {
+            if (args->assembly) {
+                if (args->input.empty()) throw Error("--assembly needs a CAD file IN");
+                if (until != kLastStage) throw Error("--assembly meshes every stage: leave --until out");
+                if (args->settings.solid) throw Error("--assembly meshes every solid: leave --solid out");
+                assembly = geom::mesh_assembly_file(args->input, options, {.glue_tolerance = args->glue_tolerance});
+                meshed = std::move(assembly->run);
+            } else if (args->input.empty()) {
                 say("no input: meshing the built-in dam block (preset paper-ex1)");
                 meshed = geom::mesh_preset("paper-ex1", options, until);
             } else {
@@ -215,7 +238,7 @@ Command add_mesh_command(CLI::App& app) {
         progress.close();
 
         const PipelineResult& r = meshed.result;
-        write_all(meshed, *args, write);
+        write_all(meshed, *args, write, assembly);
         if (args->quiet) return 0;
 
         say(fmt::format("{} ({}): {} tube{}, S = {:.6g}, St = {:.6g}", meshed.source, meshed.format, meshed.tubes,
@@ -232,6 +255,8 @@ Command add_mesh_command(CLI::App& app) {
                         mesh.cell_count(CellKind::Tet), mesh.face_count(FaceKind::Tri),
                         mesh.face_count(FaceKind::Quad)));
         fmt::print("\n{}\n", run::run_table(meshed));
+        if (assembly)
+            for (const std::string& line : run::assembly_lines(*assembly, meshed)) say(line);
         for (const std::string& line : run::group_lines(meshed)) say(line);
         for (const std::string& out : args->outputs) say("wrote " + out);
         if (!args->report.empty()) say("wrote " + args->report);

@@ -1,4 +1,4 @@
-// The kernels behind the performance-regression gate (tools/bench-compare), run by a fixed
+// The kernels behind the performance-regression gate (bench/bench-compare), run by a fixed
 // recipe instead of Google Benchmark's adaptive iteration counts: a count or a timing taken
 // here must mean the same work on every run.
 //

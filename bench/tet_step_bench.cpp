@@ -58,7 +58,7 @@
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/prepare.hpp"
-#include "geom/step_write.hpp"
+#include "geom/import/step_write.hpp"
 #include "tests/support/process.hpp"
 
 namespace {

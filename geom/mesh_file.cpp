@@ -10,7 +10,7 @@
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/describe_groups.hpp"
-#include "geom/import.hpp"
+#include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
 
 namespace tubemesh::geom {

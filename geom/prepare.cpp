@@ -7,10 +7,10 @@
 #include <cmath>
 #include <unordered_set>
 
-#include "geom/discretize.hpp"
+#include "geom/sizing/discretize.hpp"
 #include "geom/face_properties.hpp"
-#include "geom/geometry_diagnosis.hpp"
-#include "geom/sizing_distances.hpp"
+#include "geom/tubes/geometry_diagnosis.hpp"
+#include "geom/sizing/sizing_distances.hpp"
 #include "geom/surface_map_occt.hpp"
 
 namespace tubemesh::geom {

@@ -32,10 +32,10 @@
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/discretize.hpp"
-#include "geom/import.hpp"
+#include "geom/sizing/discretize.hpp"
+#include "geom/import/import.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/step_write.hpp"
+#include "geom/import/step_write.hpp"
 
 namespace tubemesh::geom {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "engine/quality/quality.hpp"
 #include "geom/mesh_file.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 
 namespace {
 

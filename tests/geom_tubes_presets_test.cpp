@@ -11,7 +11,7 @@
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "engine/core/types.hpp"
-#include "geom/discretize.hpp"
+#include "geom/sizing/discretize.hpp"
 
 namespace tubemesh {
 namespace {

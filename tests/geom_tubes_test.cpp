@@ -7,8 +7,8 @@
 #include <limits>
 #include <numbers>
 
-#include "geom/tubes.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "geom/tubes/tubes.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 
 namespace tubemesh {
 namespace {

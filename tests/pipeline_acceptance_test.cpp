@@ -16,7 +16,7 @@
 
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
-#include "tests/pipeline_acceptance_checks.hpp"
+#include "tests/support/pipeline_acceptance_checks.hpp"
 
 namespace tubemesh::acceptance {
 namespace {
@@ -144,7 +144,7 @@ TEST(CloseTubes, FacingFrontsAreLoweredTogether) {
 }
 
 // Pipes 0.35 apart, 0.25 over the bottom face: the sizing guards leave the pyramid layer 2.2 St
-// of room (geom/sizing.hpp), which cuts St to about 0.057 here; with the paper's 0.98 St the
+// of room (geom/sizing/sizing.hpp), which cuts St to about 0.057 here; with the paper's 0.98 St the
 // layer could not close (the rings' facing corners 0.73 h apart, the criteria need ~1.2 h).
 TEST(CloseTubes, VeryClosePipesGetAClosedPyramidLayer) {
     const CaseFigures& f = close_pipes_figures(0.35, 0.25);

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "tests/surface_test_support.hpp"
+#include "tests/support/surface_test_support.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/sweep/wall_projection.hpp"
-#include "tests/sweep_surfaces.hpp"
+#include "tests/support/sweep_surfaces.hpp"
 
 namespace tubemesh::sweep_testing {
 namespace {

@@ -16,11 +16,11 @@
 
 #include "engine/delaunay/delaunay.hpp"
 #include "engine/predicates/predicates.hpp"
-#include "engine/tets/optimise.hpp"
+#include "engine/tets/optimise/optimise.hpp"
 #include "engine/tets/point_colouring.hpp"
-#include "engine/tets/point_insertion.hpp"
-#include "engine/tets/smoothing.hpp"
-#include "engine/tets/tet_flips.hpp"
+#include "engine/tets/optimise/point_insertion.hpp"
+#include "engine/tets/optimise/smoothing.hpp"
+#include "engine/tets/optimise/tet_flips.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 

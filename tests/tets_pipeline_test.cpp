@@ -33,7 +33,7 @@
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
 #include "geom/prepare.hpp"
-#include "tests/tets_pipeline_checks.hpp"
+#include "tests/support/tets_pipeline_checks.hpp"
 
 namespace tubemesh::tets_acceptance {
 namespace {

@@ -74,7 +74,7 @@ std::optional<Stage> stage_from_name(std::string_view name);
 // engine in DiscreteGeometry; run_pipeline itself reads the fields from `sweep` on.
 struct MeshOptions {
     // S, the overall mesh size (edges and surface triangles far from the tubes). 0 (default):
-    // the bounding-box diagonal / 25, at least 1.3 St of the final St (geom/sizing.hpp). A
+    // the bounding-box diagonal / 25, at least 1.3 St of the final St (geom/sizing/sizing.hpp). A
     // given S is never changed.
     double size = 0;
     // St, the hex ring's thickness and axial spacing. 0 (default): the smallest tube
@@ -109,7 +109,7 @@ struct MeshOptions {
     // (engine/pipeline/thread_limit.hpp); 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
     // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
-    // from the solid's volume and area, S, St and the tubes' length (geom/element_budget.hpp).
+    // from the solid's volume and area, S, St and the tubes' length (geom/sizing/element_budget.hpp).
     // 0 (default): what this machine's memory holds (at 150 bytes per element).
     double max_elements = 0;
     // Determinism: the same input and options always give the same mesh, byte for byte, for

@@ -15,11 +15,11 @@
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
-#include "engine/tets/boundary_recovery.hpp"
-#include "engine/tets/control_space.hpp"
-#include "engine/tets/odt_relaxation.hpp"
-#include "engine/tets/optimise.hpp"
-#include "engine/tets/refine.hpp"
+#include "engine/tets/recovery/boundary_recovery.hpp"
+#include "engine/tets/refinement/control_space.hpp"
+#include "engine/tets/refinement/odt_relaxation.hpp"
+#include "engine/tets/optimise/optimise.hpp"
+#include "engine/tets/refinement/refine.hpp"
 
 namespace tubemesh::tets {
 

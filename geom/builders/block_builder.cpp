@@ -24,7 +24,7 @@
 #include "geom/builders/host_geometry.hpp"
 #include "geom/builders/pipe_sweep.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/solid_check.hpp"
+#include "geom/import/solid_check.hpp"
 
 namespace tubemesh::geom {
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "engine/io/mesh_io.hpp"
-#include "geom/element_budget.hpp"
+#include "geom/sizing/element_budget.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/memory_limit.hpp"

@@ -34,7 +34,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -51,6 +50,7 @@
 #include "bench/peer_mesh_files.hpp"
 #include "bench/process_measure.hpp"
 #include "bench/reference_cases.hpp"
+#include "engine/core/timing.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "engine/pipeline/pipeline.hpp"
 #include "engine/quality/quality.hpp"
@@ -65,7 +65,6 @@ namespace {
 
 using namespace tubemesh;
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 constexpr int kPeerThreads = 2;  // Gmsh's -nt, as issue 8 asks
@@ -102,8 +101,6 @@ testing::TempDir& temp_dir() {
     static testing::TempDir dir;
     return dir;
 }
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 void build_case(TetCase& c, const bench::ReferenceCase& reference) {
     const geom::BuiltBlock& block = bench::built_block(reference);

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <optional>
 
+#include "engine/core/timing.hpp"
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/thread_limit.hpp"
 #include "geom/builders/block_builder.hpp"
@@ -17,13 +17,9 @@ namespace tubemesh::geom {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // The analysis limits DESIGN.md gives: tets the paper reports down to 0.26, hexes 1 <= Cond <= 4.
 constexpr double kTetCollapseFloor = 0.2;
 constexpr double kHexConditionCeiling = 4;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Below the analysis limits (a tet under 0.2, a hex condition number over 4) the user hears of
 // it, with the likeliest cause: what thinned the ring, or the layers asked for.

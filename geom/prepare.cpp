@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <unordered_set>
 
+#include "engine/core/timing.hpp"
 #include "geom/sizing/discretize.hpp"
 #include "geom/face_properties.hpp"
 #include "geom/tubes/geometry_diagnosis.hpp"
@@ -25,10 +25,6 @@ std::string join(const std::vector<int>& ids) {
     }
     return s;
 }
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string source_text(const std::string& source) { return source == "user" ? "given" : source; }
 

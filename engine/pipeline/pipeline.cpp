@@ -1,12 +1,12 @@
 #include "engine/pipeline/pipeline.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
 #include <unordered_set>
 
+#include "engine/core/timing.hpp"
 #include "engine/surface/face_boundaries.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
@@ -32,10 +32,6 @@ std::optional<Stage> stage_from_name(std::string_view name) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Each ring's wall nodes at its two end stations, named after the pipe's wall group.
 void add_rims(const SweepResult& sweep, const HybridMesh& mesh, MeshDescription& description) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <limits>
 #include <string>
 #include <vector>
@@ -11,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "engine/core/timing.hpp"
 #include "engine/tets/optimise/flip_pass.hpp"
 #include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
@@ -99,9 +99,6 @@ constexpr double kFocusBelow = 0.35;
 // How far from the rescued tets the smoothing that wins back the mean reaches (tet rings).
 constexpr int kCleanupRings = 6;
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
     const auto start = Clock::now();
     OptimiseStats s;
@@ -137,7 +134,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
                        pass > 0 ? &near : nullptr, changed, &collapses);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
-        s.seconds_flips += since(t0);
+        s.seconds_flips += seconds_since(t0);
         s.flips23 += f.flips23;
         s.flips32 += f.flips32;
         s.flips44 += f.flips44;
@@ -153,7 +150,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
                                                 o.mean_floor, pass > 0 ? &near : nullptr, changed, collapses);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
-        s.seconds_smoothing += since(t0);
+        s.seconds_smoothing += seconds_since(t0);
         s.moves += m.moves;
         s.colours = std::max(s.colours, m.colours);
         if (f.total() == 0 && m.moves == 0) break;
@@ -199,14 +196,14 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
             s.flip_rounds += f.rounds;
             s.moves += m.moves;
         }
-        s.seconds_rescue = since(t0);
+        s.seconds_rescue = seconds_since(t0);
     }
     const Measure after = measure(dom, o.flip_threshold, collapses);
     s.tets_after = dom.tets.size();
     s.min_collapse_after = after.min;
     s.mean_collapse_after = after.mean;
     s.below_threshold_after = after.below;
-    s.seconds_total = since(start);
+    s.seconds_total = seconds_since(start);
     return s;
 }
 

@@ -1,7 +1,6 @@
 #include "engine/tets/recovery/boundary_recovery.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
 #include <span>
 #include <string>
@@ -12,6 +11,7 @@
 #include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
+#include "engine/core/timing.hpp"
 #include "engine/delaunay/delaunay.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/tets/recovery/front_check.hpp"
@@ -22,9 +22,6 @@
 namespace tubemesh::tets {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string name(const Target& g) {
     std::string s = g.is_edge() ? "front edge " : "front triangle ";
@@ -311,7 +308,7 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
     }
     RecoveryMesh mesh(std::move(all), del.tets);
     st.delaunay_tets = del.tets.size();
-    st.seconds_delaunay = since(t0);
+    st.seconds_delaunay = seconds_since(t0);
 
     // 2. Edges, then faces.
     FrontLocks locks(elements);
@@ -326,7 +323,7 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
         ++st.missing_edges;
         st.edges_by_flips += rec.recover(targets[i]);
     }
-    st.seconds_edges = since(t0);
+    st.seconds_edges = seconds_since(t0);
     t0 = Clock::now();
     locks.lock_faces = true;
     targets.clear();
@@ -337,13 +334,13 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
         ++st.missing_faces;
         st.faces_by_flips += rec.recover(targets[i]);
     }
-    st.seconds_faces = since(t0);
+    st.seconds_faces = seconds_since(t0);
     st.steiner_inserted = static_cast<index_t>(rec.steiner.size());
     t0 = Clock::now();
     if (options.remove_steiner)
         for (index_t s : rec.steiner)
             if (mesh.incident_tet(s) != kNoIndex && contract_point(mesh, s)) ++st.steiner_removed;
-    st.seconds_steiner_removal = since(t0);
+    st.seconds_steiner_removal = seconds_since(t0);
 
     // 3. Inside / outside by flood fill, seeded on both sides of every front triangle.
     t0 = Clock::now();
@@ -417,13 +414,13 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
     if (open != front.size() / 3)
         throw Error("boundary recovery: internal error, the region's boundary has " + std::to_string(open) +
                     " faces, the front " + std::to_string(front.size() / 3));
-    st.seconds_classify = since(t0);
+    st.seconds_classify = seconds_since(t0);
     st.tets = out.tets.size();
     st.flips23 = rec.counters.flips23;
     st.edge_removals = rec.counters.edge_removals;
     st.flips32 = rec.counters.flips32;
     st.flips44 = rec.counters.flips44;
-    st.seconds_total = since(t_start);
+    st.seconds_total = seconds_since(t_start);
     if (stats_out) *stats_out = st;
     return out;
 }

@@ -1,7 +1,6 @@
 #include "engine/tets/refinement/odt_relaxation.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -9,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
 #include "engine/tets/point_colouring.hpp"  // build_incidence
@@ -141,7 +141,7 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
 
 RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
                              const RelaxationOptions& options) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
     const index_t fixed = recovered.point_count();
@@ -164,7 +164,7 @@ RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std:
     const index_t before = domain.point_count();
     drop_unused_points(domain, fixed);
     stats.dropped = before - domain.point_count();
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    stats.seconds = seconds_since(t0);
     return stats;
 }
 

@@ -1,12 +1,12 @@
 #include "engine/tets/refinement/refine.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
 #include "engine/tets/refinement/control_space.hpp"
@@ -14,8 +14,6 @@
 
 namespace tubemesh::tets {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
@@ -104,7 +102,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         stats.inserted = next - first_new;
     });
     stats.tets = domain.tets.size();
-    stats.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    stats.seconds = seconds_since(t0);
     return stats;
 }
 

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "engine/mesh/edge_key.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/predicates/predicates.hpp"
 
@@ -20,14 +21,13 @@ namespace {
 // then reduce to orient3d with this point (the plane through a line of the plane and e meets
 // the plane exactly in that line).
 void off_plane_point(const double* a, const double* b, const double* c, double* e) {
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const Vec3 u = vec3_at(b) - vec3_at(a), v = vec3_at(c) - vec3_at(a), n = cross(u, v);
+    const double an[3] = {std::abs(n.x), std::abs(n.y), std::abs(n.z)};
     int k = 0;
     for (int i = 1; i < 3; ++i)
-        if (std::abs(n[i]) > std::abs(n[k])) k = i;
-    const double span = std::abs(u[0]) + std::abs(u[1]) + std::abs(u[2]) + std::abs(v[0]) + std::abs(v[1]) +
-                        std::abs(v[2]) + 1.0;
+        if (an[i] > an[k]) k = i;
+    const double span = std::abs(u.x) + std::abs(u.y) + std::abs(u.z) + std::abs(v.x) + std::abs(v.y) +
+                        std::abs(v.z) + 1.0;
     e[0] = a[0];
     e[1] = a[1];
     e[2] = a[2];
@@ -36,11 +36,12 @@ void off_plane_point(const double* a, const double* b, const double* c, double* 
 
 // Point w on the open segment ab (a != b).
 bool on_open_segment(const double* a, const double* b, const double* w) {
-    const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const Vec3 d = vec3_at(b) - vec3_at(a);
+    const double ad[3] = {std::abs(d.x), std::abs(d.y), std::abs(d.z)};
     int k = 0;
     for (int i = 1; i < 3; ++i)
-        if (std::abs(d[i]) > std::abs(d[k])) k = i;
-    const double span = std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]) + 1.0;
+        if (ad[i] > ad[k]) k = i;
+    const double span = ad[0] + ad[1] + ad[2] + 1.0;
     // Two planes through ab, spanned with the two other axes: they meet exactly in line ab.
     double e1[3] = {a[0], a[1], a[2]}, e2[3] = {a[0], a[1], a[2]};
     e1[(k + 1) % 3] += span;

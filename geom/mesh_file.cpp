@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "engine/core/timing.hpp"
-#include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/thread_limit.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
@@ -57,7 +56,6 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
     r.phases.insert(r.phases.begin(), phases.begin(), phases.end());
     r.warnings.insert(r.warnings.begin(), prepared.warnings.begin(), prepared.warnings.end());
 
-    if (options.check) check_result(r, options.progress);
     add_quality_warnings(r, prepared.plan, options);
     describe_groups(model, prepared.tubes, r.mesh, r.description);
 

@@ -8,6 +8,7 @@
 
 #include "engine/core/timing.hpp"
 #include "engine/surface/face_boundaries.hpp"
+#include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
 #include "engine/pipeline/thread_limit.hpp"
@@ -282,6 +283,7 @@ PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& optio
     run_phases(input, options, until, out);
     out.quality = summarize_quality(out.mesh);
     for (const PhaseReport& p : out.phases) out.seconds += p.seconds;
+    if (options.check) check_result(out, options.progress);
     return out;
 }
 

@@ -117,8 +117,8 @@ struct MeshOptions {
     // because its Delaunay passes split into tets.partitions parts whatever the thread count;
     // tets.partitions = 0 trades this for one part per thread). There is no faster
     // timing-dependent mode.
-    // Run the validity and conformity check (engine/pipeline/stage_check.hpp) on the result
-    // before handing it out: geom::mesh_file / mesh_model throw when it fails. Default true.
+    // Run the validity and conformity check (engine/pipeline/stage_check.hpp) as run_pipeline's
+    // last stage, so every caller gets a checked mesh; it throws when the mesh fails. Default true.
     bool check = true;
     // Progress of each phase (progress.hpp); empty (default) = silent. The mesh does not
     // depend on it.
@@ -137,8 +137,8 @@ struct PipelineInput {
     std::vector<PipelineFace> faces;  // every face of the model, in id order
 };
 
-// One phase of a run: the engine's phases (run_pipeline) and, before them, geom's (import,
-// tubes, sizes, discretize) and, after them, the check. A new phase is one more entry.
+// One phase of a run: the engine's phases (run_pipeline, the check last) and, before them,
+// geom's (import, tubes, sizes, discretize). A new phase is one more entry.
 struct PhaseReport {
     std::string name;  // "import", ..., "sweep", "surface", "pyramids", "check"
     double seconds = 0;
@@ -159,7 +159,7 @@ struct PipelineResult {
     QualitySummary quality;             // per cell kind: count, min, mean, max, histogram
     double seconds = 0;                 // sum of the phases' seconds
     std::vector<std::string> warnings;  // what the user should know about this mesh, one line each
-    CheckReport check;  // filled by check_result (stage_check.hpp); empty before
+    CheckReport check;  // filled by the check stage (stage_check.hpp); empty when options.check is off
     SweepResult sweep;
     // After Surface: the local sizes the faces were meshed again with, where a first pass left
     // triangles too large for the tets beside them (tet_size_caps.hpp); empty when none was.
@@ -173,8 +173,9 @@ struct PipelineResult {
     PyramidStats pyramid_stats;
 };
 
-// Runs the phases up to and including `until`, then summarises the quality. Throws
-// tubemesh::Error from the first phase that fails (its message names the tube or face).
+// Runs the phases up to and including `until`, summarises the quality, then checks the mesh
+// (options.check; a "check" phase last). Throws tubemesh::Error from the first phase that
+// fails (its message names the tube or face) or when the mesh fails the check.
 // Reports progress per phase through options.progress: sweep counts tubes, surface faces,
 // pyramids front quads (start and end of each phase: the modules run as one call each).
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options = {},

@@ -1,9 +1,9 @@
+#include "engine/core/timing.hpp"
 #include "tests/support/pipeline_acceptance_checks.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -297,9 +297,9 @@ CaseFigures measure_case(const std::string& name, const geom::BlockSpec& spec, c
         const PipelineResult sweep = run_pipeline(input, mesh_options, Stage::Sweep);
         f.rings.ring_check = check_mesh(sweep_testing::with_outer_quads(sweep.mesh, sweep.sweep));
     }
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     const PipelineResult r = run_pipeline(input, mesh_options, Stage::Pyramids);
-    f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    f.seconds = seconds_since(t0);
     measure_rings(prepared, r, f.rings);
     measure_surface(block, prepared, r, mesh_options, f.surface);
     measure_pyramids(r, f.tubes, f.pyramids);

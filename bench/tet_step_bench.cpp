@@ -1,6 +1,6 @@
-// The tet step (paper §5) against TetGen and Gmsh on the same closed front (issue 8), and the
-// peers' table of issue 10, on the reference cases (bench/reference_cases.hpp: the paper's three
-// examples at the S of issue 9's acceptance, the serpentine lift, the large lift), each case's S
+// The tet step (paper §5) against TetGen and Gmsh on the same closed front, and the
+// peers' table, on the reference cases (bench/reference_cases.hpp: the paper's three
+// examples at the S of their CLI acceptance, the serpentine lift, the large lift), each case's S
 // the far size of every program.
 //
 // Per case, outside any timed region: the case's block through prepare_model and the pipeline
@@ -10,7 +10,7 @@
 //  * TetGen/<case>: `tetgen -pYq1.414 front.smesh` (1 thread).
 //  * GmshFront/<case>: the front as one discrete surface, Surface Loop + Volume, `gmsh -3 -algo
 //    hxt -nt 2 -clmax S` (S: the case's far size, the tet step's far_size).
-//  * GmshSolid/<case> (issue 10): Gmsh all-tet on the CAD solid (the STEP file), HXT, 2
+//  * GmshSolid/<case>: Gmsh all-tet on the CAD solid (the STEP file), HXT, 2
 //    threads, 8 elements per 2π of curvature (-clcurv 8: 8 segments around each hole), -clmax S.
 //    Not run on the large lift (tens of millions of tets): its row says so.
 //  * TetStep/<case>/threads:1 and :2: tets::build_tets on a fresh copy of the pyramid-stage
@@ -67,7 +67,7 @@ using namespace tubemesh;
 namespace fs = std::filesystem;
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-constexpr int kPeerThreads = 2;  // Gmsh's -nt, as issue 8 asks
+constexpr int kPeerThreads = 2;  // Gmsh's -nt: the tet step is compared at 2 threads
 constexpr int kCurvatureElements = 8;
 constexpr char kStepUnit[] = "metre";  // the STEP files' label; Gmsh's OCCTargetUnit "M"
 
@@ -484,7 +484,7 @@ void BM_TetStep(benchmark::State& state, const std::string& name, unsigned threa
         k["x_faster_peer_own"] = std::min(tetgen->own_seconds, gmsh->own_seconds) / stats.seconds;
     }
     if (threads == unsigned(kPeerThreads)) {
-        // Issue 10: the whole pipeline is the run up to the pyramids (timed once, 2 threads)
+        // The whole pipeline is the run up to the pyramids (timed once, 2 threads)
         // plus this tet step.
         Row whole{name, kPipeline, kPeerThreads, c.seconds_before_tets + stats.seconds};
         whole.tets = q.count;
@@ -535,7 +535,7 @@ std::string table_text(const std::string& load_before, const std::string& load_a
          "times summed. CPU s: user + system of all threads (peers: the process), which shows how much of the "
          "shared machine a run got. peak MB: tet step = peak resident growth during the call; peers = peak resident set of "
          "the process. Whole pipeline = prepare_model + pipeline to the pyramids (2 threads) + the 2-thread tet "
-         "step.\n\nGoal (issue 8): tet step at 2 threads at least 3x faster than the faster peer, with better "
+         "step.\n\nGoal: tet step at 2 threads at least 3x faster than the faster peer, with better "
          "minimum and mean collapse.\n";
     for (const std::string& name : settings().cases) {
         const Row* ours = find_row(name, kTetStep, kPeerThreads);

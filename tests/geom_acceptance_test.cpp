@@ -1,4 +1,4 @@
-// Issue 3 acceptance on the blocks geom/builders makes: for every preset and 50 random seeds,
+// Geometry acceptance on the blocks geom/builders makes: for every preset and 50 random seeds,
 // tubes found = pipes built, (a) as built, (b) after a STEP write / import round trip through
 // tubemesh's own writer and importer, and (c) after every closed (tube wall) face is split in
 // two with ShapeUpgrade. Every tube discretises with end rings of equal node counts whose node 0

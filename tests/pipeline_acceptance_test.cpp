@@ -1,9 +1,9 @@
-// Acceptance of issues 4 (hex rings), 5 (surface) and 6 (pyramid layer) through the real
+// Acceptance of the hex rings, the surface and the pyramid layer through the real
 // pipeline, on every builder preset, on random blocks (geom/builders/random_block.hpp) and on
 // pipes close to each other and to a face: pipeline_acceptance_checks.hpp lists what is
 // measured and the bars.
 //
-// Every bar of the three issues on every preset, seeds 1-50 and the close pipes, in CI (the
+// Every bar of the three steps on every preset, seeds 1-50 and the close pipes, in CI (the
 // 40 seeds 11-50 took 57 s on one core of the loaded machine).
 // One ctest test per block and bar, so `ctest -j` spreads them.
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@
 namespace tubemesh::acceptance {
 namespace {
 
-// The paper's three examples and the serpentine lift: where issue 6 sets the pyramid bar.
+// The paper's three examples and the serpentine lift: where the pyramid bar applies.
 bool pyramid_quality_preset(const std::string& name) {
     return name == "paper-ex1" || name == "paper-ex2" || name == "paper-ex3" || name == "serpentine-lift";
 }

@@ -131,8 +131,8 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     // pass leaves triangles too large for the tets beside them, their caps join the field and
     // the faces are meshed again (tet_size_caps.hpp says why). The caps only lower the field,
     // but a capped triangle's successors may sit nearer the pipe, where the tets are smaller
-    // still: two passes were enough on every block measured (2026-12-03: the serpentine lift,
-    // lifts of 2 and 40 pipes), and the last pass is kept whatever it leaves.
+    // still: two passes were enough on every block measured (bench/results/tuning-notes.md),
+    // and the last pass is kept whatever it leaves.
     const index_t first_triangle = out.mesh.face_count(FaceKind::Tri);
     const TetSizeCaps too_large(out.mesh, out.sweep.outer_quads, tet_far_size(in, opt), opt.tets.gradation,
                                 opt.size_growth);

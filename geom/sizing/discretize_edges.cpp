@@ -23,7 +23,7 @@ namespace {
 Vec3 to_vec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // A curved edge's segments turn by at most this angle (radians). An inscribed polygon then
-// misses at most kMaxTurn^2 / 6 (7e-4) of a disk's area, inside issue 5's bar of 1e-3 on flat
+// misses at most kMaxTurn^2 / 6 (7e-4) of a disk's area, inside the surface's bar of 1e-3 on flat
 // faces: a flat face bounded by a circle is meshed no better than its boundary polygon.
 constexpr double kMaxTurn = 0.065;
 // Curvature samples along a free-form edge (exact for lines, circles and ellipses).

@@ -336,7 +336,7 @@ std::string summary(const CaseFigures& f) {
 }
 
 void expect_rings_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " hex rings (issue 4)");
+    SCOPED_TRACE(f.name + " hex rings");
     const RingAcceptance& h = f.rings;
     EXPECT_GT(h.hexes, 0u);
     EXPECT_GE(h.min_jacobian, 0.5);
@@ -347,7 +347,7 @@ void expect_rings_accepted(const CaseFigures& f) {
 }
 
 void expect_surface_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " surface (issue 5)");
+    SCOPED_TRACE(f.name + " surface");
     const SurfaceAcceptance& s = f.surface;
     EXPECT_GT(s.triangles, 0u);
     expect_closed("end quads + triangles + wall quads", s.surface);
@@ -356,29 +356,29 @@ void expect_surface_accepted(const CaseFigures& f) {
 }
 
 void expect_wall_nodes_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " wall nodes (issue 4)");
+    SCOPED_TRACE(f.name + " wall nodes");
     EXPECT_LE(f.rings.wall_error, 1e-7);
 }
 
 void expect_triangle_angles_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " triangle angles (issue 5)");
+    SCOPED_TRACE(f.name + " triangle angles");
     EXPECT_GE(f.surface.min_angle, 20.0);
     EXPECT_GE(f.surface.fraction_above_40, 0.95);
 }
 
 void expect_flat_area_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " flat face areas (issue 5)");
+    SCOPED_TRACE(f.name + " flat face areas");
     EXPECT_LE(f.surface.flat_area_error, 1e-3) << f.surface.area_problems;
 }
 
 void expect_neighbor_ratio_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " neighbour sizes (issue 5)");
+    SCOPED_TRACE(f.name + " neighbour sizes");
     EXPECT_LE(f.surface.max_neighbor_ratio, 1.5) << f.surface.pairs_above_1_5 << " of " << f.surface.pairs
                                                  << " pairs above 1.5; worst " << f.surface.worst_pair;
 }
 
 void expect_pyramid_layer_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " pyramid layer (issue 6)");
+    SCOPED_TRACE(f.name + " pyramid layer");
     const PyramidAcceptance& p = f.pyramids;
     EXPECT_GT(p.outer_quads, 0u);
     EXPECT_EQ(p.pyramids, p.outer_quads);
@@ -388,7 +388,7 @@ void expect_pyramid_layer_accepted(const CaseFigures& f) {
 }
 
 void expect_pyramid_quality_accepted(const CaseFigures& f) {
-    SCOPED_TRACE(f.name + " pyramid quality (issue 6)");
+    SCOPED_TRACE(f.name + " pyramid quality");
     EXPECT_GE(f.pyramids.min_jacobian, 0.45);
     EXPECT_GE(f.pyramids.mean_jacobian, 0.80);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The acceptance figures of issues 4 (hex rings), 5 (surface) and 6 (pyramid layer), measured
+// The acceptance figures of the hex rings, the surface and the pyramid layer, measured
 // on one block run through the real pipeline (geom builders -> prepare -> run_pipeline), each
 // independently of the modules' own statistics: element quality from the mesh, node positions
 // by projection onto geom's SurfaceMaps, areas against OpenCASCADE's, closed surfaces with the
@@ -22,7 +22,7 @@ struct SurfaceFigures {
     index_t tubes = 0;       // holes through the solid: one closed surface has Euler 2 - 2·tubes
 };
 
-struct RingAcceptance {  // issue 4
+struct RingAcceptance {
     index_t hexes = 0;
     double min_jacobian = 0, mean_jacobian = 0, max_condition = 0;
     double wall_error = 0;  // largest distance of a wall node from its tube's wall faces, over r
@@ -31,7 +31,7 @@ struct RingAcceptance {  // issue 4
     CheckReport ring_check; // the sweep-only mesh with its outer quads as boundary faces
 };
 
-struct SurfaceAcceptance {  // issue 5
+struct SurfaceAcceptance {
     index_t triangles = 0;
     SurfaceFigures surface;       // end quads + triangles (+ the wall quads that close the holes)
     double node_error = 0;        // largest distance of a triangle node from its face, over h(x)
@@ -50,7 +50,7 @@ struct SurfaceAcceptance {  // issue 5
     std::string worst_pair;  // where the largest ratio is, for the report
 };
 
-struct PyramidAcceptance {  // issue 6
+struct PyramidAcceptance {
     index_t outer_quads = 0, pyramids = 0;
     index_t quads_without_one_pyramid = 0;  // outer quads not the base of exactly one pyramid
     SurfaceFigures front;                   // PipelineResult::tet_front alone
@@ -74,10 +74,10 @@ struct CaseFigures {
 CaseFigures measure_case(const std::string& name, const geom::BlockSpec& spec,
                          const geom::PrepareOptions& options = {}, const MeshOptions& mesh_options = {});
 
-// One line per figure, for the test log and the issue notes.
+// One line per figure, for the test log.
 std::string summary(const CaseFigures& f);
 
-// The bars of each issue as gtest expectations (each failure names the case and figure).
+// The bars of each step as gtest expectations (each failure names the case and figure).
 // (All hold on every preset and seeds 1-50; the gaps executable keeps only pipes closer than
 // the sizing guards allow.)
 void expect_rings_accepted(const CaseFigures& f);     // J_m >= 0.5, Cond <= 4, mean >= 0.70, hosts 1e-7 r, check

@@ -196,7 +196,7 @@ std::string summary(const TetFigures& f) {
 }
 
 void expect_tets_fill_the_front(const TetFigures& f) {
-    SCOPED_TRACE(f.name + " tets (issue 8)");
+    SCOPED_TRACE(f.name + " tets");
     EXPECT_GT(f.tets, 0u);
     EXPECT_EQ(f.front_not_one_tet, 0u) << f.first_problems;
     EXPECT_EQ(f.front_wrong_side, 0u) << f.first_problems;
@@ -209,13 +209,13 @@ void expect_tets_fill_the_front(const TetFigures& f) {
 }
 
 void expect_tet_minimum(const TetFigures& f) {
-    SCOPED_TRACE(f.name + " tet quality (issue 8)");
+    SCOPED_TRACE(f.name + " tet quality");
     EXPECT_GE(f.min_collapse, 0.30);
     EXPECT_EQ(f.below_0_2, 0u);
 }
 
 void expect_tet_mean(const TetFigures& f) {
-    SCOPED_TRACE(f.name + " tet quality (issue 8)");
+    SCOPED_TRACE(f.name + " tet quality");
     EXPECT_GE(f.mean_collapse, 0.80);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The acceptance figures of issue 8 (the tet step, paper §5) on one block run through the real
+// The acceptance figures of the tet step (paper §5) on one block run through the real
 // pipeline (geom builders -> prepare -> run_pipeline to Stage::Tets), measured from the mesh
 // alone, independently of the tet step's own statistics: how each front triangle is covered,
 // exact orientation of every tet, volume against the front's, check_mesh, tet collapse.
@@ -40,10 +40,10 @@ TetFigures measure_tets(const std::string& name, const geom::BlockSpec& spec, co
 // The same measures on a mesh the caller ran (tet_front from the same run).
 TetFigures measure_tets(const std::string& name, const PipelineResult& result);
 
-// One line per block, for the test log and the issue notes.
+// One line per block, for the test log.
 std::string summary(const TetFigures& f);
 
-// Issue 8's bars as gtest expectations, each failure naming the block.
+// The tet step's bars as gtest expectations, each failure naming the block.
 // Every front triangle a face of one tet on its inner side, tets positive, volume to 1e-9
 // relative, check_mesh clean.
 void expect_tets_fill_the_front(const TetFigures& f);

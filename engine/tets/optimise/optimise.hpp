@@ -28,13 +28,10 @@ struct OptimiseOptions {
     // or above mean_floor, the sum of the mesh's collapses) by more than this per old tet.
     // Default 1e-6: guards against endless flipping between equal configurations.
     double min_gain = 1e-6;
-    // Largest number of tets around an edge that edge removal tries (3..10). Default 5: with
-    // 6 the meshes were byte for byte those of 7 (the five reference cases and seeds 1-30,
-    // 2026-12-03), and 5 changed 12 of those 30 seeds and the serpentine lift by at most 6e-5
-    // of the mean, minima unchanged, while the flip sweeps, which walk and plan every shell up
-    // to the limit, took 20-25 % less (serpentine 0.456 -> 0.343 s, dam block 0.040 -> 0.030,
-    // tet step 2.56 -> 2.39 s and 0.277 -> 0.271; 3 alternating runs, 2 threads). The
-    // worst-tet rescue still tries rings up to EdgeShell::kMaxSize.
+    // Largest number of tets around an edge that edge removal tries (3..10). Default 5: larger
+    // rings change the meshes by a few 1e-5 of the mean and cost a fifth more flip time
+    // (bench/results/tuning-notes.md). The worst-tet rescue still tries rings up to
+    // EdgeShell::kMaxSize.
     int max_edge_ring = 5;
     // Smoothing sweeps per pass (the first over the free points near a change since the last
     // pass, every later one over the points near a move of the sweep before). Default 1: a
@@ -49,25 +46,16 @@ struct OptimiseOptions {
     double min_mean_gain = 2e-3;
     // Below this collapse, flips and moves raise the smallest collapse of what they change;
     // at or above it they raise the mesh's mean collapse and never make a tet below
-    // min(its old worst, mean_floor). Default 0.40. Before the ODT relaxation, 0.40 and 0.35
-    // left tets below 0.30 on the serpentine lift that no later pass freed (minimum 0.294 and
-    // 0.289 against 0.310 at 0.45; 2026-12-02). After it (CLI, 2 threads, 2026-12-03), 0.45 ->
-    // 0.40 -> 0.35 gave means 0.7558 -> 0.7579 -> 0.7582 (paper-ex1), 0.6926 -> 0.6962 ->
-    // 0.6980 (paper-ex2), 0.6748 -> 0.6781 -> 0.6799 (paper-ex3), 0.6848 -> 0.6888 -> 0.6905
-    // (dam block), 0.6771 -> 0.6808 -> 0.6827 (serpentine), minima 0.336 -> 0.353 -> 0.336,
-    // 0.332 -> 0.325 -> 0.325, 0.335 throughout, 0.352 -> 0.352 -> 0.349, 0.327 -> 0.347 ->
-    // 0.327, no slower; over seeds 1-50 every mean rose (0.7213 -> 0.7247 -> 0.7261 on average),
-    // and 0.40 left the lowest minimum where it was (0.298) where 0.35 took it to 0.283 and three
-    // seeds below 0.30.
+    // min(its old worst, mean_floor). Default 0.40: a lower floor raises the mean a little more
+    // but lets the lowest minimum fall (bench/results/tuning-notes.md).
     double mean_floor = 0.40;
     // After the passes, the tets below this, worst first, try every 2-3 flip and inner-edge
     // removal (rings up to 10) followed by moves of the new tets' free points, or when none
     // lifts one, a new free point over one of its faces (worst_tet_rescue.hpp), until one
     // nothing lifts (it then bounds the minimum); then one more flip sweep near them and one
-    // smoothing sweep over all free points win back the mean. Default 0.32 (issue 8
-    // asks for 0.30): the worst tets of the paper examples have four front points, so no move
-    // reaches them and no single flip lifts them (paper-ex2 at 1 and 3 threads: 0.294 -> 0.305,
-    // paper-ex1 at 3 and 4 threads: 0.320 -> 0.324; 2026-12-02). 0: off.
+    // smoothing sweep over all free points win back the mean. Default 0.32, above the 0.30
+    // minimum the tet step aims for: the worst tets of the paper examples have four front
+    // points, so no move reaches them and no single flip lifts them. 0: off.
     double rescue_below = 0.32;
     // Worker threads; 0 = the caller's oneTBB arena (its global_control limit applies). The
     // result is the same for every value.

@@ -131,8 +131,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
                 target_store[target_count++] = regular_apex(dom, star[k], p);
         }
     const std::span<const Vec3> targets(target_store.data(), target_count);
-    // Steps of 1/8 and 1/16 rarely win for a fair star and cost more trials (paper-ex1,
-    // 2026-12-02); a poor star gets them.
+    // Steps of 1/8 and 1/16 rarely win for a fair star and cost more trials; a poor star gets them.
     constexpr double kStepsAll[] = {1.0, 0.5, 0.25, 0.125, 0.0625};
     const std::span<const double> kSteps(kStepsAll, now.worst < kPolishBelow ? 5 : 3);
 
@@ -157,12 +156,8 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
         // Mean-raising moves of a fair star: the two longer steps (the short one seldom wins).
         const std::span<const double> sum_steps = now.worst < kPolishBelow ? kSteps : kSteps.first(2);
         // Along the ascent of the sum: the target lies 0.4 of the star's mean edge from p, and
-        // the four trials go 1/2 to 1/16 of the way there (0.2 down to 0.025 of the edge). On
-        // the paper's examples this target raised the mean by 0.002-0.006 (2026-12-02). Trials
-        // from the whole way to 1/8 won 4, 2054, 17933 and 67808 times on the serpentine lift,
-        // longest first; shifted one halving down (as many trials), the means rose by 0.0006 to
-        // 0.0011 on the reference cases and on every one of seeds 1-50, minima no lower on the
-        // five cases, tet step within +1.5 % (2026-12-03).
+        // the four trials go 1/2 to 1/16 of the way there (0.2 down to 0.025 of the edge): the
+        // short steps win most often (bench/results/tuning-notes.md).
         constexpr double kUphillSteps[] = {0.5, 0.25, 0.125, 0.0625};
         const Vec3 g = ascent_direction(corners, collapse);
         const double glen = norm(g);

@@ -171,9 +171,8 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                     return g - (std::sqrt(std::max(h * h - rho2, 0.25 * h * h)) / len) * outward;
                 };
                 // h where the new tet will be (halfway to the apex), not at the face: in a graded
-                // field the face's own size is too small for the tet it starts. On the paper's
-                // examples this raised the mean collapse by 0.001-0.007 and cut refinement rounds
-                // from 9-10 to 6 (2026-12-02).
+                // field the face's own size is too small for the tet it starts (a higher mean
+                // collapse in fewer rounds: bench/results/tuning-notes.md).
                 const double h_face = (m.h[v[node[0]]] + m.h[v[node[1]]] + m.h[v[node[2]]]) / 3.0;
                 const Vec3 first = apex(h_face);
                 const Vec3 mid = 0.5 * (g + first);

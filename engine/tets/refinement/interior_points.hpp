@@ -39,9 +39,8 @@ struct MeshView {
 // The control space's h at each point (3 coordinates each), in parallel.
 std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace& space);
 
-// True when the tet's mean edge length exceeds `tolerance` times the mean h of its four points.
-// (It used to ask h at the centroid: the same element counts and quality within 0.5 % and
-// 0.002 on the paper's examples, and no nearest-node query per new tet; 2026-12-02.)
+// True when the tet's mean edge length exceeds `tolerance` times the mean h of its four points:
+// as good as h at the centroid, without a nearest-node query per new tet.
 bool tet_too_big(const MeshView& mesh, index_t tet, double tolerance);
 
 // The active front: faces 4*t+f of too-big tets t whose other side is the front or a tet that

@@ -54,8 +54,8 @@ bool move_point(const TetDomain& dom, index_t p, std::span<const index_t> star, 
 // One sweep of moves over the free points (ids >= fixed), all at once from the old positions
 // (Jacobi, as in Chen and Holst): each point stays inside its old star, so inside the region,
 // whatever its neighbours do, and the tets are built again afterwards, so the old ones need not
-// stay positive. Against moving colour by colour (Gauss-Seidel): the same means within 0.0005
-// on the reference cases, 8-16 % less time, no colouring (2026-12-03).
+// stay positive. As good as moving colour by colour (Gauss-Seidel), faster and with no
+// colouring (bench/results/tuning-notes.md).
 std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes) {
     const Incidence inc = build_incidence(dom);
     const index_t n = dom.point_count();

@@ -24,15 +24,8 @@
 namespace tubemesh::tets {
 
 struct RelaxationOptions {
-    // Move-and-reinsert rounds; 0 = none. Two by default, measured 2026-12-03 (CLI, 2 threads;
-    // mean collapse after the optimisation, tet step seconds):
-    //   iterations    0              1              2              3
-    //   dam block     0.674 0.275 s  0.681 0.259 s  0.685 0.257 s  0.687 0.299 s
-    //   paper-ex1     0.747 0.402    0.753 0.402    0.756 0.467    0.757 0.498
-    //   paper-ex2     0.680 0.129    0.689 0.133    0.692 0.145    0.694 0.154
-    //   serpentine    0.666 2.59     0.674 2.45     0.678 2.71     0.680 2.89
-    // A round costs a move sweep and the kernel's insertion of every free point; the
-    // optimisation that follows has less to do (on the dam block 0.170 s -> 0.103 s at 2).
+    // Move-and-reinsert rounds; 0 = none. Default 2: a third raises the mean collapse little
+    // for more time (bench/results/tuning-notes.md).
     int iterations = 2;
     // Worker threads; 0 = the caller's oneTBB arena.
     unsigned threads = 0;

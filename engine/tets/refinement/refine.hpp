@@ -21,13 +21,8 @@ struct RefineOptions {
     // A candidate closer than this times h to a point (or an accepted candidate) is dropped; 0.7.
     double reject_factor = 0.7;
     // Far-field lattice (interior_points.hpp, FarLattice): cube edge over S (0: off) and the
-    // least distance of a lattice point from the front's nodes, over S. Defaults 1.12 and 0.85,
-    // measured 2026-12-02 (CLI): paper-ex1 at S 0.6 mean collapse 0.725 -> 0.748 with 115,143 ->
-    // 115,210 elements (15 % of its tets are lattice tets); a 4 x 4 x 4 box at S/4 0.785 ->
-    // 0.864; paper-ex2 and ex3 0.682 -> 0.679 and 0.665 -> 0.662 (little of them is far field:
-    // mostly seam), the serpentine lift unchanged (no tet reaches S); minima unchanged. Spacing
-    // 1.05 gave +0.026 on paper-ex1 but 119.7 k elements (issue 9's bar: 117,188), 1.15 113 k
-    // and +0.016; a clearance of 0.7 +0.029 with 117.5 k, 1.5 +0.014 (a thicker seam).
+    // least distance of a lattice point from the front's nodes, over S. Defaults 1.12 and 0.85:
+    // the far field's mean collapse rises for few more elements (bench/results/tuning-notes.md).
     double lattice_spacing = 1.12;
     double lattice_clearance = 0.85;
     // Worker threads; 0 = oneTBB's default.

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "engine/geometry/tube_data.hpp"
-#include "engine/mesh/hybrid_mesh.hpp"  // Vec3
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh::sweep {
 

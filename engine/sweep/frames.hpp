@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/mesh/hybrid_mesh.hpp"  // Vec3
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
-#include "engine/mesh/hybrid_mesh.hpp"  // Vec3
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh::sweep {
 

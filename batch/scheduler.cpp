@@ -1,19 +1,17 @@
 #include "batch/scheduler.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <deque>
 #include <map>
 
 #include "batch/plan.hpp"
 #include "batch/test_hooks.hpp"
 #include "batch/worker.hpp"
+#include "engine/core/timing.hpp"
 
 namespace tubemesh::batch {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // An estimate runs the import and the size plan only: a minute is far beyond what it needs.
 constexpr double kEstimateTimeLimit = 600;
@@ -68,7 +66,7 @@ BatchSummary run_blocks(Executor& executor, Catalogue& catalogue, const std::vec
         progress.block = block;
         progress.record = record;
         progress.running = static_cast<int>(executor.running());
-        progress.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+        progress.elapsed = seconds_since(t0);
         run.progress(progress);
     };
     emit(BatchProgress::Event::Planned);
@@ -132,7 +130,7 @@ BatchSummary run_blocks(Executor& executor, Catalogue& catalogue, const std::vec
     s.done = progress.done;
     s.failed = progress.failed;
     s.elements = progress.elements;
-    s.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    s.seconds = seconds_since(t0);
     return s;
 }
 

@@ -16,7 +16,7 @@
 #include "engine/io/file_bytes.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/import.hpp"
+#include "geom/import/import.hpp"
 #include "geom/mesh_file.hpp"
 #include "geom/prepare.hpp"
 #include "tools/run/html_report.hpp"

@@ -1,4 +1,4 @@
-// The kernels behind the performance-regression gate (tools/bench-compare), run by a fixed
+// The kernels behind the performance-regression gate (bench/bench-compare), run by a fixed
 // recipe instead of Google Benchmark's adaptive iteration counts: a count or a timing taken
 // here must mean the same work on every run.
 //
@@ -52,6 +52,7 @@
 
 #include "bench/phase_measure.hpp"
 #include "bench/reference_cases.hpp"
+#include "engine/core/timing.hpp"
 #include "engine/core/types.hpp"
 #include "engine/delaunay/delaunay.hpp"
 #include "geom/mesh_file.hpp"
@@ -59,7 +60,6 @@
 namespace {
 
 using namespace tubemesh;
-using Clock = std::chrono::steady_clock;
 
 // Where a kernel's measured work starts and ends; the set decides what that means.
 class Meter {
@@ -248,7 +248,7 @@ double calibration_seconds() {
         s ^= s << 17;
         acc = acc * 0.999999 + double(s >> 40);
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - t).count();
+    const double seconds = seconds_since(t);
     if (acc == 42.0) std::puts("");  // keeps the loop
     return seconds;
 }

@@ -1,4 +1,4 @@
-// Each engine phase alone on the reference cases (issue 10; bench/reference_cases.hpp): the
+// Each engine phase alone on the reference cases (bench/reference_cases.hpp): the
 // sweep, the surface triangulation, the pyramid layer and the tet step, 1 and 2 threads.
 //
 // Per iteration, run_pipeline runs up to the phase on the case's prepared model (built and

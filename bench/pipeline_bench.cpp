@@ -1,4 +1,4 @@
-// The whole pipeline per reference case (issue 10; bench/reference_cases.hpp), 1 and 2
+// The whole pipeline per reference case (bench/reference_cases.hpp), 1 and 2
 // threads. Timed: geom::mesh_model on a block built once outside the timed loop, so tube
 // recognition, sizing, discretisation, every engine phase and the final check are in, the
 // CAD import is not. Pipeline/large-lift takes minutes: filter it out for quick runs.

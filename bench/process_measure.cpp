@@ -7,12 +7,13 @@
 #include <sys/wait.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "engine/core/timing.hpp"
 
 extern char** environ;
 
@@ -81,7 +82,7 @@ ProgramRun run_program(const std::vector<std::string>& argv, const std::filesyst
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
 
     ProgramRun run;
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     pid_t pid = 0;
     const int spawned = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -93,7 +94,7 @@ ProgramRun run_program(const std::vector<std::string>& argv, const std::filesyst
     rusage usage{};
     while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
     }
-    run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    run.wall_seconds = seconds_since(t0);
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     // time's file ends with the peak in KiB (after a "Command exited with non-zero status"
     // line when the program failed); missing when the limit stopped the run (peak 0: unknown).

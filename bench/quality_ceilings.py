@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""How high issue 8's tet-collapse mean can go on the paper's examples and the serpentine
+"""How high the tet-collapse mean can go on the paper's examples and the serpentine
 lift: each example next to the same solid without its holes, meshed by tubemesh and by Gmsh,
 all scored with our collapse measure (`tubemesh check`). A hole-free solid's mean is a
 ceiling for the example: the rings, pyramids and the grading towards them only add worse tets.
@@ -37,7 +37,7 @@ import meshio
 import numpy as np
 
 # (row label, solid, tubemesh mesh options). Solids: presets by name, or "box:X,Y,Z" /
-# "cylinder:D,L" (hole-free, millimetre). Sizes: issue 9's (0.6, 1.1, 40), and what moves them.
+# "cylinder:D,L" (hole-free, millimetre). Sizes: the CLI acceptance's (0.6, 1.1, 40), and what moves them.
 ROWS = [
     ("paper-ex1, S 0.6 (defaults)", "paper-ex1", ["--size", "0.6"]),
     ("paper-ex1, S 0.6, paper's ring: n 4, St 0.2, axial 2.5", "paper-ex1",

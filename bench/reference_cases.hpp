@@ -1,10 +1,10 @@
 #pragma once
-// The reference cases of issue 10, shared by the per-phase benchmarks (phase_bench.cpp), the
+// The reference cases, shared by the per-phase benchmarks (phase_bench.cpp), the
 // whole-pipeline benchmark (pipeline_bench.cpp), the peers' table (tet_step_bench.cpp) and the
 // regression gate (gate_kernels.cpp):
-// the paper's three examples at the sizes of issue 9's acceptance (S = 0.6, 1.1, 40), the
+// the paper's three examples at the sizes of their CLI acceptance (S = 0.6, 1.1, 40), the
 // serpentine dam lift at its default size, the built-in dam block (paper-ex1 at its default
-// size: what `tubemesh mesh` without input meshes, issues 8 and 9), and a large lift (the
+// size: what `tubemesh mesh` without input meshes), and a large lift (the
 // serpentine lift at S = 0.11:
 // about 6 million elements, minutes per run; its benchmarks carry "large-lift" in their names
 // so quick runs filter them out).

@@ -13,7 +13,7 @@
 #include <memory>
 
 #include "engine/sweep/sweep.hpp"
-#include "tests/sweep_scenes.hpp"
+#include "tests/support/sweep_scenes.hpp"
 
 namespace {
 

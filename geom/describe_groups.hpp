@@ -7,7 +7,7 @@
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/mesh_description.hpp"
 #include "geom/model.hpp"
-#include "geom/tubes.hpp"
+#include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {
 

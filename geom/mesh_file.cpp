@@ -2,28 +2,23 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <optional>
 
-#include "engine/pipeline/stage_check.hpp"
+#include "engine/core/timing.hpp"
 #include "engine/pipeline/thread_limit.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/describe_groups.hpp"
-#include "geom/import.hpp"
+#include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
 
 namespace tubemesh::geom {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // The analysis limits DESIGN.md gives: tets the paper reports down to 0.26, hexes 1 <= Cond <= 4.
 constexpr double kTetCollapseFloor = 0.2;
 constexpr double kHexConditionCeiling = 4;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Below the analysis limits (a tet under 0.2, a hex condition number over 4) the user hears of
 // it, with the likeliest cause: what thinned the ring, or the layers asked for.
@@ -61,7 +56,6 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
     r.phases.insert(r.phases.begin(), phases.begin(), phases.end());
     r.warnings.insert(r.warnings.begin(), prepared.warnings.begin(), prepared.warnings.end());
 
-    if (options.check) check_result(r, options.progress);
     add_quality_warnings(r, prepared.plan, options);
     describe_groups(model, prepared.tubes, r.mesh, r.description);
 

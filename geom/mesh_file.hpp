@@ -10,9 +10,9 @@
 //   // run.result.quality: per cell kind count, min, mean, max; run.result.seconds: total
 //
 // Steps: import (ImportOptions: one solid, healed) -> prepare (tube recognition, S and St,
-// discretisation; geom/prepare.hpp) -> run_pipeline up to `until` -> check_result when
-// options.check (engine/pipeline/stage_check.hpp). options.threads limits oneTBB for the whole
-// call, import and check included. No OpenCASCADE header here.
+// discretisation; geom/prepare.hpp) -> run_pipeline up to `until`, whose last stage is the
+// check when options.check (engine/pipeline/stage_check.hpp). options.threads limits oneTBB for
+// the whole call, import and check included. No OpenCASCADE header here.
 //
 // Throws tubemesh::Error, one line a user can act on, for a missing or unreadable file, a file
 // with no solid or several solids and no `solid` chosen, invalid or contradictory sizes, a

@@ -4,15 +4,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <unordered_set>
 
-#include "geom/discretize.hpp"
-#include "geom/gap_sizes.hpp"
+#include "engine/core/timing.hpp"
+#include "geom/sizing/discretize.hpp"
+#include "geom/sizing/gap_sizes.hpp"
 #include "geom/face_properties.hpp"
-#include "geom/geometry_diagnosis.hpp"
-#include "geom/sizing_distances.hpp"
+#include "geom/tubes/geometry_diagnosis.hpp"
+#include "geom/sizing/sizing_distances.hpp"
 #include "geom/surface_map_occt.hpp"
 
 namespace tubemesh::geom {
@@ -27,10 +27,6 @@ std::string join(const std::vector<int>& ids) {
     }
     return s;
 }
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string source_text(const std::string& source) { return source == "user" ? "given" : source; }
 

@@ -7,7 +7,7 @@
 // when the paper's rules would have to cut a given St (the message names the rule, the
 // tubes or faces involved and the largest St allowed), and when St is not below S (whether
 // each came from the user or from a default). A given S is never changed; a default S is
-// recomputed from the final St (geom/sizing.hpp).
+// recomputed from the final St (geom/sizing/sizing.hpp).
 //
 // No OpenCASCADE header here.
 #include <memory>
@@ -17,11 +17,11 @@
 #include "engine/geometry/surface_map.hpp"
 #include "engine/geometry/tube_data.hpp"
 #include "engine/pipeline/pipeline.hpp"
-#include "geom/discretize.hpp"
-#include "geom/element_budget.hpp"
+#include "geom/sizing/discretize.hpp"
+#include "geom/sizing/element_budget.hpp"
 #include "geom/model.hpp"
-#include "geom/sizing.hpp"
-#include "geom/tubes.hpp"
+#include "geom/sizing/sizing.hpp"
+#include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {
 
@@ -43,7 +43,7 @@ public:
     ElementEstimate estimate;  // the lower bound options.budget was checked on
     DiscreteGeometry geometry;
     std::vector<std::unique_ptr<SurfaceMap>> maps;  // element i: face id i + 1
-    std::vector<SizeSource> gap_sizes;              // geom/gap_sizes.hpp
+    std::vector<SizeSource> gap_sizes;              // geom/sizing/gap_sizes.hpp
     std::vector<PhaseReport> phases;                // "tubes", "sizes", "discretize"
     // What the user should be told: no tube found, S lowered by the rules, the plan's own
     // warnings. One line each.

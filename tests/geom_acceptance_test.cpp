@@ -1,4 +1,4 @@
-// Issue 3 acceptance on the blocks geom/builders makes: for every preset and 50 random seeds,
+// Geometry acceptance on the blocks geom/builders makes: for every preset and 50 random seeds,
 // tubes found = pipes built, (a) as built, (b) after a STEP write / import round trip through
 // tubemesh's own writer and importer, and (c) after every closed (tube wall) face is split in
 // two with ShapeUpgrade. Every tube discretises with end rings of equal node counts whose node 0
@@ -32,10 +32,10 @@
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/discretize.hpp"
-#include "geom/import.hpp"
+#include "geom/sizing/discretize.hpp"
+#include "geom/import/import.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/step_write.hpp"
+#include "geom/import/step_write.hpp"
 
 namespace tubemesh::geom {
 namespace {

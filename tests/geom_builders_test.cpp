@@ -23,9 +23,9 @@
 #include "geom/builders/random_block.hpp"
 #include "geom/builders/serpentine.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/import.hpp"
+#include "geom/import/import.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/solid_check.hpp"
+#include "geom/import/solid_check.hpp"
 #include "tests/support/error_of.hpp"
 
 namespace tubemesh::geom {

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "geom/discretize.hpp"
-#include "geom/discretize_edges.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "geom/sizing/discretize.hpp"
+#include "geom/sizing/discretize_edges.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 #include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh {

@@ -1,4 +1,4 @@
-// The element budget (geom/element_budget.hpp): its estimate is a lower bound of what the
+// The element budget (geom/sizing/element_budget.hpp): its estimate is a lower bound of what the
 // phases really make, kind by kind, and a run it refuses is refused before meshing with the
 // smallest S that would fit — which then does fit.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include "engine/pipeline/pipeline.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
-#include "geom/element_budget.hpp"
+#include "geom/sizing/element_budget.hpp"
 #include "geom/prepare.hpp"
 #include "tests/support/error_of.hpp"
 

@@ -26,11 +26,11 @@
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/face_properties.hpp"
-#include "geom/import.hpp"
+#include "geom/import/import.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/solid_check.hpp"
-#include "geom/step_write.hpp"
-#include "geom/step_write_occt.hpp"
+#include "geom/import/solid_check.hpp"
+#include "geom/import/step_write.hpp"
+#include "geom/import/step_write_occt.hpp"
 #include "tests/support/error_of.hpp"
 
 namespace tubemesh::geom {

@@ -1,5 +1,4 @@
-// A solid without tubular holes (issue 9: "A solid without tubes gets an all-tetrahedral mesh
-// and a warning"): the whole pipeline through geom::mesh_model gives only tetrahedra, passes
+// A solid without tubular holes gets an all-tetrahedral mesh and a warning: the whole pipeline through geom::mesh_model gives only tetrahedra, passes
 // the check, fills the solid's volume and says why there are no hexes.
 #include <gtest/gtest.h>
 
@@ -9,7 +8,7 @@
 
 #include "engine/quality/quality.hpp"
 #include "geom/mesh_file.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 
 namespace {
 
@@ -30,7 +29,7 @@ void expect_all_tets(const TopoDS_Solid& solid, double volume, double size) {
     // mesh_model ran the full check (it throws otherwise): no violation, the volume it summed.
     EXPECT_TRUE(r.check.ok());
     EXPECT_NEAR(r.check.volume, volume, 2e-3 * volume);  // curved faces are chords
-    EXPECT_GT(r.quality.tet_collapse.min, 0.1);  // no sliver (issue 8 sets 0.2 on its own cases)
+    EXPECT_GT(r.quality.tet_collapse.min, 0.1);  // no sliver (the tet step bars 0.2 on its own cases)
 }
 
 TEST(MeshWithoutTubes, BoxIsAllTets) {

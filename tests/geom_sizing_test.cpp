@@ -9,8 +9,8 @@
 
 #include "engine/core/types.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/sizing.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "geom/sizing/sizing.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 
 namespace tubemesh {
 namespace {

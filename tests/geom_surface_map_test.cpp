@@ -8,8 +8,8 @@
 
 #include "engine/core/types.hpp"
 #include "geom/surface_map_occt.hpp"
-#include "geom/tubes.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "geom/tubes/tubes.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 
 namespace tubemesh {
 namespace {

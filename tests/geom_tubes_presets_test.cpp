@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <optional>
 
+#include "engine/core/timing.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "engine/core/types.hpp"
-#include "geom/discretize.hpp"
+#include "geom/sizing/discretize.hpp"
 
 namespace tubemesh {
 namespace {
@@ -26,7 +26,7 @@ TEST_P(GeomTubesPresets, EveryPipeIsOneTubeAndDiscretises) {
         GTEST_SKIP() << "the builder cannot build it (its own tests cover that): " << e.what();
     }
     const geom::BuiltBlock& block = *built;
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     const geom::TubeSearch found = geom::find_tubes(block.model);
     std::string why;
     for (const auto& r : found.rejected) why += r.reason + "\n";
@@ -50,7 +50,7 @@ TEST_P(GeomTubesPresets, EveryPipeIsOneTubeAndDiscretises) {
         EXPECT_EQ(t.ring1.size(), t.ring2.size());
         EXPECT_GE(t.stations.size(), 2u);
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     RecordProperty("seconds", std::to_string(seconds));
 }
 

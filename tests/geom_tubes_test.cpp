@@ -9,8 +9,8 @@
 
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/serpentine.hpp"
-#include "geom/tubes.hpp"
-#include "tests/geom_tubes_solids.hpp"
+#include "geom/tubes/tubes.hpp"
+#include "tests/support/geom_tubes_solids.hpp"
 
 namespace tubemesh {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "engine/io/mesh_io.hpp"
 #include "engine/io/msh_reader.hpp"
-#include "tests/mesh_io_samples.hpp"
+#include "tests/support/mesh_io_samples.hpp"
 #include "tests/support/process.hpp"
 #include "tests/support/sample_meshes.hpp"
 

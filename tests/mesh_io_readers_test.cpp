@@ -8,7 +8,7 @@
 #include <string>
 
 #include "engine/io/mesh_io.hpp"
-#include "tests/mesh_io_samples.hpp"
+#include "tests/support/mesh_io_samples.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"
 #include "tests/support/sample_meshes.hpp"

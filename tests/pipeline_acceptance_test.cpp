@@ -1,9 +1,9 @@
-// Acceptance of issues 4 (hex rings), 5 (surface) and 6 (pyramid layer) through the real
+// Acceptance of the hex rings, the surface and the pyramid layer through the real
 // pipeline, on every builder preset, on random blocks (geom/builders/random_block.hpp) and on
 // pipes close to each other and to a face: pipeline_acceptance_checks.hpp lists what is
 // measured and the bars.
 //
-// Every bar of the three issues on every preset, seeds 1-50 and the close pipes, in CI (the
+// Every bar of the three steps on every preset, seeds 1-50 and the close pipes, in CI (the
 // 40 seeds 11-50 took 57 s on one core of the loaded machine).
 // One ctest test per block and bar, so `ctest -j` spreads them.
 #include <gtest/gtest.h>
@@ -16,12 +16,12 @@
 
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
-#include "tests/pipeline_acceptance_checks.hpp"
+#include "tests/support/pipeline_acceptance_checks.hpp"
 
 namespace tubemesh::acceptance {
 namespace {
 
-// The paper's three examples and the serpentine lift: where issue 6 sets the pyramid bar.
+// The paper's three examples and the serpentine lift: where the pyramid bar applies.
 bool pyramid_quality_preset(const std::string& name) {
     return name == "paper-ex1" || name == "paper-ex2" || name == "paper-ex3" || name == "serpentine-lift";
 }
@@ -144,7 +144,7 @@ TEST(CloseTubes, FacingFrontsAreLoweredTogether) {
 }
 
 // Pipes 0.35 apart, 0.25 over the bottom face: the sizing guards leave the pyramid layer 2.2 St
-// of room (geom/sizing.hpp), which cuts St to about 0.057 here; with the paper's 0.98 St the
+// of room (geom/sizing/sizing.hpp), which cuts St to about 0.057 here; with the paper's 0.98 St the
 // layer could not close (the rings' facing corners 0.73 h apart, the criteria need ~1.2 h).
 TEST(CloseTubes, VeryClosePipesGetAClosedPyramidLayer) {
     const CaseFigures& f = close_pipes_figures(0.35, 0.25);

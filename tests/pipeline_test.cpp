@@ -52,7 +52,8 @@ TEST_P(PipelinePreset, SweepStageIsValidAndConforming) {
     const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {}, Stage::Sweep);
     print_phases(GetParam(), r);
     EXPECT_EQ(r.reached, Stage::Sweep);
-    ASSERT_EQ(r.phases.size(), 1u);
+    ASSERT_EQ(r.phases.size(), 2u);  // sweep, then the check
+    EXPECT_EQ(r.phases.back().name, "check");
     EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), 0u);
     EXPECT_EQ(r.mesh.face_count(FaceKind::Tri), 0u);
     ASSERT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
@@ -68,7 +69,8 @@ TEST_P(PipelinePreset, PyramidStageHasOneValidPyramidPerOuterQuad) {
     const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {}, Stage::Pyramids);
     print_phases(GetParam(), r);
     EXPECT_EQ(r.reached, Stage::Pyramids);
-    ASSERT_EQ(r.phases.size(), 3u);
+    ASSERT_EQ(r.phases.size(), 4u);  // sweep, surface, pyramids, then the check
+    EXPECT_EQ(r.phases.back().name, "check");
     const index_t outer = static_cast<index_t>(r.sweep.outer_quads.size() / 4);
     ASSERT_GT(outer, 0u);
     EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), outer);
@@ -96,7 +98,8 @@ TEST(Pipeline, SurfaceStageAddsTrianglesOnNonWallFaces) {
     const Prepared p = prepare("straight-pipe");
     const PipelineResult r = run_pipeline(p.prepared.pipeline_input(), {}, Stage::Surface);
     EXPECT_EQ(r.reached, Stage::Surface);
-    ASSERT_EQ(r.phases.size(), 2u);
+    ASSERT_EQ(r.phases.size(), 3u);  // sweep, surface, then the check
+    EXPECT_EQ(r.phases.back().name, "check");
     EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), 0u);
     EXPECT_GT(r.mesh.face_count(FaceKind::Tri), 0u);
     expect_cells_valid(check_mesh(r.mesh));

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "engine/predicates/predicates.hpp"
-#include "predicates_reference.hpp"
+#include "tests/support/predicates_reference.hpp"
 
 namespace {
 

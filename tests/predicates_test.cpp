@@ -18,7 +18,7 @@
 #include "engine/predicates/expansion.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/predicates/predicates_inline.hpp"
-#include "predicates_reference.hpp"
+#include "tests/support/predicates_reference.hpp"
 
 namespace {
 

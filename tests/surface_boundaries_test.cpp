@@ -16,7 +16,7 @@
 
 #include "engine/surface/face_boundaries.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
-#include "tests/surface_test_support.hpp"
+#include "tests/support/surface_test_support.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <unordered_map>
 
 #include "engine/surface/mesh_surfaces.hpp"
-#include "tests/surface_test_support.hpp"
+#include "tests/support/surface_test_support.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "tests/surface_test_support.hpp"
+#include "tests/support/surface_test_support.hpp"
 
 namespace {
 
@@ -27,7 +27,7 @@ double polygon_area_uv(const std::vector<Uv>& p) {
     return std::abs(a) / 2;
 }
 
-// The acceptance bounds, checked on every face.
+// The surface's acceptance bounds, checked on every face.
 void expect_good(const FaceReport& r, const char* what) {
     SCOPED_TRACE(what);
     for (const std::string& p : r.problems) ADD_FAILURE() << p;

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <random>
 
-#include "tests/surface_test_support.hpp"
+#include "tests/support/surface_test_support.hpp"
 
 namespace {
 

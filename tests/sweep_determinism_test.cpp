@@ -4,7 +4,7 @@
 #include <tbb/global_control.h>
 
 #include "engine/sweep/sweep.hpp"
-#include "tests/sweep_scenes.hpp"
+#include "tests/support/sweep_scenes.hpp"
 
 namespace tubemesh::sweep_testing {
 namespace {

@@ -5,16 +5,17 @@
 #include <numbers>
 
 #include "engine/core/types.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/sweep/frames.hpp"
 
 namespace {
 
-using Eigen::Vector3d;
+using tubemesh::Vec3;
 using tubemesh::Frame;
 using tubemesh::rotation_minimizing_frames;
 
 struct Path {
-    std::vector<Vector3d> c, t;
+    std::vector<Vec3> c, t;
 };
 
 // Half circle of radius R in the xy plane: a 180-degree bend.
@@ -22,8 +23,8 @@ Path half_circle(double R, int n) {
     Path p;
     for (int i = 0; i <= n; ++i) {
         const double a = std::numbers::pi * i / n;
-        p.c.emplace_back(R * std::cos(a), R * std::sin(a), 0);
-        p.t.emplace_back(-std::sin(a), std::cos(a), 0);
+        p.c.push_back({R * std::cos(a), R * std::sin(a), 0});
+        p.t.push_back({-std::sin(a), std::cos(a), 0});
     }
     return p;
 }
@@ -36,16 +37,16 @@ Path serpentine(int legs, double length, double R, int per_leg, int per_bend) {
         const double dir = leg % 2 == 0 ? 1.0 : -1.0;
         const double x0 = dir > 0 ? 0 : length;
         for (int i = 0; i < per_leg; ++i) {
-            p.c.emplace_back(x0 + dir * length * i / per_leg, y, 0);
-            p.t.emplace_back(dir, 0, 0);
+            p.c.push_back({x0 + dir * length * i / per_leg, y, 0});
+            p.t.push_back({dir, 0, 0});
         }
         if (leg + 1 == legs) break;
         const double cx = dir > 0 ? length : 0, cy = y + R;
         for (int i = 0; i < per_bend; ++i) {
             const double a = std::numbers::pi * i / per_bend;  // from -pi/2 turning by pi
             const double s = dir > 0 ? 1.0 : -1.0;
-            p.c.emplace_back(cx + s * R * std::sin(a), cy - R * std::cos(a), 0);
-            p.t.emplace_back(s * std::cos(a), std::sin(a), 0);
+            p.c.push_back({cx + s * R * std::sin(a), cy - R * std::cos(a), 0});
+            p.t.push_back({s * std::cos(a), std::sin(a), 0});
         }
         y += 2 * R;
     }
@@ -53,17 +54,17 @@ Path serpentine(int legs, double length, double R, int per_leg, int per_bend) {
 }
 
 TEST(Frames, StraightLineKeepsTheInitialNormal) {
-    std::vector<Vector3d> c, t;
+    std::vector<Vec3> c, t;
     for (int i = 0; i < 50; ++i) {
-        c.emplace_back(0.1 * i, 0.2 * i, 0.3 * i);
-        t.emplace_back(1, 2, 3);
+        c.push_back({0.1 * i, 0.2 * i, 0.3 * i});
+        t.push_back({1, 2, 3});
     }
-    const auto f = rotation_minimizing_frames(c, t, Vector3d(0, 0, 1));
-    const Vector3d n0 = f.front().normal;
+    const auto f = rotation_minimizing_frames(c, t, Vec3{0, 0, 1});
+    const Vec3 n0 = f.front().normal;
     for (const Frame& fr : f) {
-        EXPECT_NEAR((fr.normal - n0).norm(), 0.0, 1e-14);
-        EXPECT_NEAR(fr.tangent.dot(fr.normal), 0.0, 1e-15);
-        EXPECT_NEAR(fr.binormal.norm(), 1.0, 1e-15);
+        EXPECT_NEAR(norm(fr.normal - n0), 0.0, 1e-14);
+        EXPECT_NEAR(dot(fr.tangent, fr.normal), 0.0, 1e-15);
+        EXPECT_NEAR(norm(fr.binormal), 1.0, 1e-15);
     }
 }
 
@@ -71,62 +72,62 @@ TEST(Frames, StraightLineKeepsTheInitialNormal) {
 // in-plane normal stays in-plane: the circumferential node at angle 0 stays on the same side.
 TEST(Frames, HalfCircleBendHasNoTwist) {
     const Path p = half_circle(3.0, 200);
-    const auto up = rotation_minimizing_frames(p.c, p.t, Vector3d(0, 0, 1));
-    for (const Frame& f : up) EXPECT_NEAR(f.normal.z(), 1.0, 1e-12);
-    const auto in_plane = rotation_minimizing_frames(p.c, p.t, Vector3d(-1, 0, 0));
+    const auto up = rotation_minimizing_frames(p.c, p.t, Vec3{0, 0, 1});
+    for (const Frame& f : up) EXPECT_NEAR(f.normal.z, 1.0, 1e-12);
+    const auto in_plane = rotation_minimizing_frames(p.c, p.t, Vec3{-1, 0, 0});
     for (std::size_t i = 0; i < in_plane.size(); ++i) {
-        EXPECT_NEAR(in_plane[i].normal.z(), 0.0, 1e-12);
+        EXPECT_NEAR(in_plane[i].normal.z, 0.0, 1e-12);
         // Pointing to the bend's centre (inwards) all the way.
-        EXPECT_LT(in_plane[i].normal.dot(p.c[i]), 0.0);
+        EXPECT_LT(dot(in_plane[i].normal, p.c[i]), 0.0);
     }
 }
 
 TEST(Frames, SerpentineHasNoTwistEndToEnd) {
     const Path p = serpentine(6, 10.0, 0.75, 40, 30);
-    const auto f = rotation_minimizing_frames(p.c, p.t, Vector3d(0, 0, 1));
+    const auto f = rotation_minimizing_frames(p.c, p.t, Vec3{0, 0, 1});
     double worst = 0;
-    for (const Frame& fr : f) worst = std::max(worst, std::abs(1.0 - fr.normal.z()));
+    for (const Frame& fr : f) worst = std::max(worst, std::abs(1.0 - fr.normal.z));
     EXPECT_LT(worst, 1e-12);
 }
 
 TEST(Frames, HelixFrameDoesNotRotateAboutTheTangent) {
     // A helix has torsion, so the Frenet frame spins about the tangent; the rotation-minimising
     // frame must not: its normal changes only along the tangent (dN/ds = -k1 T).
-    std::vector<Vector3d> c, t;
+    std::vector<Vec3> c, t;
     const double a = 1.0, b = 0.3;
     for (int i = 0; i <= 2000; ++i) {
         const double s = 4 * std::numbers::pi * i / 2000;
-        c.emplace_back(a * std::cos(s), a * std::sin(s), b * s);
-        t.emplace_back(-a * std::sin(s), a * std::cos(s), b);
+        c.push_back({a * std::cos(s), a * std::sin(s), b * s});
+        t.push_back({-a * std::sin(s), a * std::cos(s), b});
     }
-    const auto f = rotation_minimizing_frames(c, t, Vector3d(1, 0, 0));
+    const auto f = rotation_minimizing_frames(c, t, Vec3{1, 0, 0});
     for (std::size_t i = 1; i < f.size(); ++i) {
-        EXPECT_NEAR(f[i].tangent.dot(f[i].normal), 0.0, 1e-13);
-        EXPECT_LT((f[i].normal - f[i - 1].normal).norm(), 0.01);
+        EXPECT_NEAR(dot(f[i].tangent, f[i].normal), 0.0, 1e-13);
+        EXPECT_LT(norm(f[i].normal - f[i - 1].normal), 0.01);
     }
     // Bishop frame rotation about the tangent is zero: d(normal)/ds is parallel to the tangent.
     for (std::size_t i = 1; i + 1 < f.size(); ++i) {
-        const Vector3d dn = f[i + 1].normal - f[i - 1].normal;
-        EXPECT_LT(std::abs(dn.dot(f[i].binormal)), 1e-6);
+        const Vec3 dn = f[i + 1].normal - f[i - 1].normal;
+        EXPECT_LT(std::abs(dot(dn, f[i].binormal)), 1e-6);
     }
 }
 
 TEST(Frames, BadInputIsAnError) {
-    std::vector<Vector3d> c{{0, 0, 0}, {0, 0, 0}}, t{{1, 0, 0}, {1, 0, 0}};
-    EXPECT_THROW(rotation_minimizing_frames(c, t, Vector3d(0, 1, 0)), tubemesh::Error);
+    std::vector<Vec3> c{{0, 0, 0}, {0, 0, 0}}, t{{1, 0, 0}, {1, 0, 0}};
+    EXPECT_THROW(rotation_minimizing_frames(c, t, Vec3{0, 1, 0}), tubemesh::Error);
     c[1] = {1, 0, 0};
-    EXPECT_THROW(rotation_minimizing_frames(c, t, Vector3d(1, 0, 0)), tubemesh::Error);
+    EXPECT_THROW(rotation_minimizing_frames(c, t, Vec3{1, 0, 0}), tubemesh::Error);
     t[1] = {0, 0, 0};
-    EXPECT_THROW(rotation_minimizing_frames(c, t, Vector3d(0, 1, 0)), tubemesh::Error);
-    EXPECT_THROW(rotation_minimizing_frames(std::span(c).first(1), std::span(t).first(1), Vector3d(0, 1, 0)),
+    EXPECT_THROW(rotation_minimizing_frames(c, t, Vec3{0, 1, 0}), tubemesh::Error);
+    EXPECT_THROW(rotation_minimizing_frames(std::span(c).first(1), std::span(t).first(1), Vec3{0, 1, 0}),
                  tubemesh::Error);
 }
 
 TEST(Frames, SignedAngle) {
     EXPECT_NEAR(tubemesh::signed_angle({1, 0, 0}, {0, 1, 0}, {0, 0, 1}), std::numbers::pi / 2, 1e-15);
     EXPECT_NEAR(tubemesh::signed_angle({1, 0, 0}, {0, -1, 0}, {0, 0, 1}), -std::numbers::pi / 2, 1e-15);
-    const Vector3d t(1, 2, 3);
-    EXPECT_NEAR(tubemesh::any_orthogonal(t.normalized()).dot(t), 0.0, 1e-15);
+    const Vec3 t{1, 2, 3};
+    EXPECT_NEAR(dot(tubemesh::any_orthogonal(normalized(t)), t), 0.0, 1e-15);
 }
 
 }  // namespace

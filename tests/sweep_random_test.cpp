@@ -11,8 +11,8 @@
 #include <random>
 
 #include "engine/sweep/sweep.hpp"
-#include "tests/sweep_checks.hpp"
-#include "tests/sweep_scenes.hpp"
+#include "tests/support/sweep_checks.hpp"
+#include "tests/support/sweep_scenes.hpp"
 
 namespace tubemesh::sweep_testing {
 namespace {

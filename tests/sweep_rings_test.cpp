@@ -8,8 +8,8 @@
 
 #include "engine/check/mesh_check.hpp"
 #include "engine/sweep/sweep.hpp"
-#include "tests/sweep_checks.hpp"
-#include "tests/sweep_scenes.hpp"
+#include "tests/support/sweep_checks.hpp"
+#include "tests/support/sweep_scenes.hpp"
 
 namespace tubemesh::sweep_testing {
 namespace {

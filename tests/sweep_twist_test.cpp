@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "engine/sweep/sweep.hpp"
-#include "tests/sweep_scenes.hpp"
+#include "tests/support/sweep_scenes.hpp"
 
 namespace tubemesh::sweep_testing {
 namespace {

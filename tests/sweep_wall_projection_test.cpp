@@ -4,7 +4,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/sweep/wall_projection.hpp"
-#include "tests/sweep_surfaces.hpp"
+#include "tests/support/sweep_surfaces.hpp"
 
 namespace tubemesh::sweep_testing {
 namespace {
@@ -24,9 +24,9 @@ struct TwoPieces {
 TEST(SweepWallProjection, StaysOnItsFaceWhileTheFootIsOnIt) {
     TwoPieces w(false);
     sweep::WallCursor cursor{0, {0, 0.5}};
-    const sweep::WallFoot foot = w.wall.project(V(kR * 1.001, 0, 0.7), cursor);
+    const sweep::WallFoot foot = w.wall.project({kR * 1.001, 0, 0.7}, cursor);
     EXPECT_EQ(cursor.face, 0);
-    EXPECT_NEAR(foot.point.z(), 0.7, 1e-15);
+    EXPECT_NEAR(foot.point.z, 0.7, 1e-15);
     EXPECT_NEAR(foot.distance, 0.001 * kR, 1e-15);
 }
 
@@ -36,25 +36,25 @@ TEST(SweepWallProjection, MovesToTheNextFacePastTheEnd) {
         sweep::WallCursor cursor{0, {0, 0.99}};
         // Just past the first piece's end, well within the tolerance a clamped foot would need
         // to be trusted at a quarter radius.
-        const sweep::WallFoot foot = w.wall.project(V(kR * 1.0001, 0, 1 + 0.1 * kR), cursor);
+        const sweep::WallFoot foot = w.wall.project({kR * 1.0001, 0, 1 + 0.1 * kR}, cursor);
         EXPECT_EQ(cursor.face, 1) << (clamped ? "clamped" : "open");
-        EXPECT_NEAR(foot.point.z(), 1 + 0.1 * kR, 1e-15) << (clamped ? "clamped" : "open");
+        EXPECT_NEAR(foot.point.z, 1 + 0.1 * kR, 1e-15) << (clamped ? "clamped" : "open");
     }
 }
 
 TEST(SweepWallProjection, FindsTheFaceWithoutACursor) {
     TwoPieces w(true);
     sweep::WallCursor cursor;
-    const sweep::WallFoot foot = w.wall.project(V(0, -kR, 1.6), cursor);
+    const sweep::WallFoot foot = w.wall.project({0, -kR, 1.6}, cursor);
     EXPECT_EQ(cursor.face, 1);
-    EXPECT_NEAR(foot.point.z(), 1.6, 1e-15);
+    EXPECT_NEAR(foot.point.z, 1.6, 1e-15);
 }
 
 TEST(SweepWallProjection, RefusesAPointFarFromTheWall) {
     TwoPieces w(false);
     sweep::WallCursor cursor;
-    EXPECT_THROW(w.wall.project(V(0, 0, 0.5), cursor), Error);  // on the axis: no foot point
-    EXPECT_THROW(w.wall.project(V(2 * kR, 0, 0.5), cursor), Error);
+    EXPECT_THROW(w.wall.project({0, 0, 0.5}, cursor), Error);  // on the axis: no foot point
+    EXPECT_THROW(w.wall.project({2 * kR, 0, 0.5}, cursor), Error);
 }
 
 }  // namespace

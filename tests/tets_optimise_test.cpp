@@ -16,11 +16,11 @@
 
 #include "engine/delaunay/delaunay.hpp"
 #include "engine/predicates/predicates.hpp"
-#include "engine/tets/optimise.hpp"
+#include "engine/tets/optimise/optimise.hpp"
 #include "engine/tets/point_colouring.hpp"
-#include "engine/tets/point_insertion.hpp"
-#include "engine/tets/smoothing.hpp"
-#include "engine/tets/tet_flips.hpp"
+#include "engine/tets/optimise/point_insertion.hpp"
+#include "engine/tets/optimise/smoothing.hpp"
+#include "engine/tets/optimise/tet_flips.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 
@@ -549,10 +549,10 @@ TEST(test_tets_optimise, PointInsertionFillsItsCavity) {
 // A dense front (1000 points on the sphere) over few inner points: the worst tets after the
 // passes have four front points and no flip lifts them. The rescue (its flips, moves and new
 // points) lifts the minimum above what the same passes leave without it: 0.245 -> 0.320 on
-// this seed, with 11 new points. Issue 8's 0.30 is checked on the pipeline's fronts (presets
+// this seed, with 11 new points. The tet step's 0.30 is checked on the pipeline's fronts (presets
 // and seeded blocks), not on these random spheres: over seeds 1-40 the rescue adds 0 to 0.076,
-// the minima end at 0.283-0.328, and 28 of the 40 take new points (2026-12-03; seed 2, used
-// here before, lost its new points when the smoothing's uphill steps got shorter). It keeps
+// the minima end at 0.283-0.328, and 28 of the 40 take new points (seed 2 takes none since
+// the smoothing's uphill steps got shorter). It keeps
 // the domain valid, the front points where they were, and gives the same arrays for 1 and 2
 // threads.
 TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {

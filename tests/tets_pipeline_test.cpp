@@ -1,4 +1,4 @@
-// Acceptance of issue 8 (the tet step, paper §5) through the real pipeline: on every builder
+// Acceptance of the tet step (paper §5) through the real pipeline: on every builder
 // preset and on random blocks (geom/builders/random_block.hpp) at geom's default sizes, every
 // front triangle is a face of one tet on its inner side, no tet is inverted, the tets' volume
 // is the front's to 1e-9 relative and check_mesh finds nothing; on the paper's three examples
@@ -13,7 +13,7 @@
 //    500 k tets), its minimum bars, and the remaining seeds up to 50; seeds 51-150 beyond the
 //    acceptance (fill, none below 0.20, any tet below 0.30 one with four front points).
 //  * test_tets_pipeline_gaps (TUBEMESH_TETS_GAPS, labels heavy and known_gap): the mean bar,
-//    which no block meets yet. Measured 2026-12-02 at these sizes: paper-ex1 0.679, paper-ex2
+//    which no block meets yet. Measured at these sizes: paper-ex1 0.679, paper-ex2
 //    0.719, paper-ex3 0.766, serpentine lift 0.671 (minima 0.344 / 0.319 / 0.361 / 0.310).
 //    12-22 % of the tets have all four nodes on the front, many of them the two tets that
 //    fill the pit between four pyramids around a ring node (collapse 0.68 on a flat ring, and
@@ -33,14 +33,14 @@
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
 #include "geom/prepare.hpp"
-#include "tests/tets_pipeline_checks.hpp"
+#include "tests/support/tets_pipeline_checks.hpp"
 
 namespace tubemesh::tets_acceptance {
 namespace {
 
-// Where issue 8 sets the quality bar: the paper's examples and the serpentine lift.
+// Where the tet step's quality bar applies: the paper's examples and the serpentine lift.
 const char* const kQualityPresets[] = {"paper-ex1", "paper-ex2", "paper-ex3", "serpentine-lift"};
-// The one whose mean bar (0.80) holds at its default size, asserted in CI (2026-12-03:
+// The one whose mean bar (0.80) holds at its default size, asserted in CI (at
 // S 20.55, 20,106 tets, mean 0.802, min 0.397); the others are the gaps executable's.
 const char* const kMeanMetPreset = "paper-ex3";
 
@@ -54,9 +54,9 @@ std::string param_name(std::string n) {
 // suite (about 125 s more): all 50 with the presets would exceed CI's 3 minutes.
 constexpr int kCiSeeds = 20, kLastSeed = 50;
 // Seeds past the acceptance's 50, heavy only (about 75 s on 2 cores): the minimum bar of 0.30
-// is issue 8's for the paper's examples and the lift, and 6 of these 100 blocks fall below it
+// is the tet step's for the paper's examples and the lift, and 6 of these 100 blocks fall below it
 // (lowest 0.271, seed 60; 12 and 0.263 before the pyramid layer lowered facing apexes together
-// and tried a wider wedge apex, 2026-12-03), always at a tet whose four points the front
+// and tried a wider wedge apex), always at a tet whose four points the front
 // fixes: two rings' apex layers facing each other across a narrow gap, or a ring's end pyramid
 // over its host face (an oblique one, or a flat host triangle on the end edge). No move
 // reaches such a tet, and the rescue's flips and new points do not lift these; the tet step

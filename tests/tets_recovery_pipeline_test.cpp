@@ -10,7 +10,7 @@
 
 #include "engine/pipeline/pipeline.hpp"
 #include "engine/predicates/predicates.hpp"
-#include "engine/tets/boundary_recovery.hpp"
+#include "engine/tets/recovery/boundary_recovery.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"

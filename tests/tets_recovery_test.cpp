@@ -1,4 +1,4 @@
-// Boundary recovery (engine/tets/boundary_recovery.hpp) on closed fronts built here: every
+// Boundary recovery (engine/tets/recovery/boundary_recovery.hpp) on closed fronts built here: every
 // front triangle is a tet face with the tet on its inner side, every tet is positive, the
 // adjacency is symmetric, and the tets fill exactly the volume the front encloses.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "engine/predicates/predicates.hpp"
-#include "engine/tets/boundary_recovery.hpp"
+#include "engine/tets/recovery/boundary_recovery.hpp"
 #include "tests/support/tet_domain_checks.hpp"
 
 namespace {

@@ -18,9 +18,9 @@
 #include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
-#include "engine/tets/control_space.hpp"
-#include "engine/tets/interior_points.hpp"
-#include "engine/tets/refine.hpp"
+#include "engine/tets/refinement/control_space.hpp"
+#include "engine/tets/refinement/interior_points.hpp"
+#include "engine/tets/refinement/refine.hpp"
 #include "tests/support/tet_domain_checks.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 

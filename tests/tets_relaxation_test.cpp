@@ -1,4 +1,4 @@
-// ODT relaxation of the tet step's interior points (engine/tets/odt_relaxation.hpp): the ODT
+// ODT relaxation of the tet step's interior points (engine/tets/refinement/odt_relaxation.hpp): the ODT
 // target itself, and relax_points on a recovered and refined cube with a cubic hole (a graded
 // size field, 0.1 outside, 0.033 at the hole, and Steiner points kept by the recovery): the
 // domain's invariants, its volume, the fixed points, the quality gain and determinism across
@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "engine/mesh/vec3_ops.hpp"
-#include "engine/tets/control_space.hpp"
-#include "engine/tets/odt_relaxation.hpp"
-#include "engine/tets/refine.hpp"
-#include "engine/tets/smoothing.hpp"
+#include "engine/tets/refinement/control_space.hpp"
+#include "engine/tets/refinement/odt_relaxation.hpp"
+#include "engine/tets/refinement/refine.hpp"
+#include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_checks.hpp"
 #include "tests/support/tet_domain_volume.hpp"

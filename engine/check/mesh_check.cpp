@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/mesh/vec3_ops.hpp"
+
 // How the check works. Every cell face becomes a record: its node ids sorted (the key), the
 // face's slot (which cell and local face, see FaceSlots) and its form (how the face's cycle runs
 // through the sorted nodes: orientation, and for a quad which node is opposite the smallest).
@@ -40,18 +42,9 @@ constexpr std::size_t kFirstCount = 10;
 constexpr index_t kSumBlock = 4096;  // cells per partial sum: fixed, so sums do not depend on threads
 
 // ---------------------------------------------------------------------------------------------
-// Geometry in plain doubles.
-
-Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
-double det(Vec3 a, Vec3 b, Vec3 c) { return dot(a, cross(b, c)); }
-
-// ---------------------------------------------------------------------------------------------
 // Corner frames, derived from the topology tables so they cannot disagree with the faces.
 
-// At a corner with three edges, det(p[a] - p[node], p[b] - p[node], p[c] - p[node]) > 0 for a
+// At a corner with three edges, det3(p[a] - p[node], p[b] - p[node], p[c] - p[node]) > 0 for a
 // valid cell: the hex corner Jacobian, the pyramid base-corner tet, the tet's signed volume.
 struct CornerFrame {
     std::uint8_t node, a, b, c;
@@ -123,7 +116,7 @@ bool has_positive_corners(CellKind kind, const CellPoints& p) {
     for (int i = 0; i < checked_corner_count(kind); ++i) {
         const CornerFrame& f = frames.frame[i];
         const Vec3 o = p[f.node];
-        if (!(det(p[f.a] - o, p[f.b] - o, p[f.c] - o) > 0)) return false;  // NaN is not positive either
+        if (!(det3(p[f.a] - o, p[f.b] - o, p[f.c] - o) > 0)) return false;  // NaN is not positive either
     }
     return true;
 }
@@ -134,17 +127,17 @@ bool has_positive_corners(CellKind kind, const CellPoints& p) {
 // the mean of its four corner values, which are the corner determinants below:
 // six times the volume = 2 * mean = sum / 2, i.e. the mean of the two diagonal splits.
 double six_cone_volume(const CellPoints& p, const LocalFace& face, Vec3 c) {
-    if (face.size == 3) return det(p[face.node[0]] - c, p[face.node[1]] - c, p[face.node[2]] - c);
+    if (face.size == 3) return det3(p[face.node[0]] - c, p[face.node[1]] - c, p[face.node[2]] - c);
     double sum = 0;
     for (int k = 0; k < 4; ++k)
-        sum += det(p[face.node[(k + 3) % 4]] - c, p[face.node[k]] - c, p[face.node[(k + 1) % 4]] - c);
+        sum += det3(p[face.node[(k + 3) % 4]] - c, p[face.node[k]] - c, p[face.node[(k + 1) % 4]] - c);
     return sum / 2;
 }
 
 // Volume bounded by the cell's faces, quads taken bilinear (see the header).
 double cell_volume(CellKind kind, const CellPoints& p) {
     const CellTopology& t = topology(kind);
-    if (kind == CellKind::Tet) return det(p[1] - p[0], p[2] - p[0], p[3] - p[0]) / 6;
+    if (kind == CellKind::Tet) return det3(p[1] - p[0], p[2] - p[0], p[3] - p[0]) / 6;
     Vec3 c{0, 0, 0};
     for (int k = 0; k < t.node_count; ++k) c = {c.x + p[k].x, c.y + p[k].y, c.z + p[k].z};
     c = {c.x / t.node_count, c.y / t.node_count, c.z / t.node_count};

@@ -3,7 +3,6 @@
 #include "engine/delaunay/triangulation.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 #include <tbb/parallel_for.h>

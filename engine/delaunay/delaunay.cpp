@@ -1,7 +1,6 @@
 #include "engine/delaunay/delaunay.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <numeric>
 #include <cmath>
 #include <string>
@@ -9,14 +8,12 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
 
 namespace tubemesh::delaunay {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Tets per point of a uniform random set is about 6.75; ghosts and free slots add a little.
 constexpr double kTetsPerPoint = 7.1;

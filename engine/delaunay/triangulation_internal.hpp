@@ -3,13 +3,13 @@
 // predicates, walk and cavity insertion; triangulation_passes.cpp: first tet, serial and
 // parallel passes, hand-over; constrained_cavity.cpp: adopted meshes and star-shaped
 // cavities). Not for use outside engine/delaunay/.
-#include <chrono>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include "engine/core/timing.hpp"
 #include "engine/delaunay/triangulation.hpp"
 
 namespace tubemesh::delaunay::detail {
@@ -86,10 +86,6 @@ inline void unmark(index_t* v) { v[0] &= ~kCavityMark; }
 inline unsigned infinite_slot(const index_t* v) {
     return v[0] == kInfiniteVertex ? 0 : v[1] == kInfiniteVertex ? 1 : v[2] == kInfiniteVertex ? 2 : 3;
 }
-
-
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 }  // namespace tubemesh::delaunay::detail
 

@@ -3,12 +3,12 @@
 #include "engine/delaunay/triangulation.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 #include <tbb/parallel_for.h>
 
 #include "engine/delaunay/triangulation_internal.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 
 namespace tubemesh::delaunay {
@@ -34,12 +34,9 @@ std::vector<index_t> Triangulation::start(std::span<const index_t> candidates) {
     // The third point: farthest from the line ab, so "not collinear" is not a rounding artefact.
     index_t c = kNoIndex;
     double best = 0;
-    const double u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    const Vec3 u = vec3_at(pb) - vec3_at(pa);
     for (index_t q : candidates) {
-        const double* pq = point(q);
-        const double w[3] = {pq[0] - pa[0], pq[1] - pa[1], pq[2] - pa[2]};
-        const double cx = u[1] * w[2] - u[2] * w[1], cy = u[2] * w[0] - u[0] * w[2], cz = u[0] * w[1] - u[1] * w[0];
-        const double area2 = cx * cx + cy * cy + cz * cz;
+        const double area2 = norm2(cross(u, vec3_at(point(q)) - vec3_at(pa)));
         if (area2 > best) {
             best = area2;
             c = q;

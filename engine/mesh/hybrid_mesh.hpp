@@ -13,12 +13,9 @@
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/topology.hpp"
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh {
-
-struct Vec3 {
-    double x, y, z;
-};
 
 // Cells of one kind: nodes[node_count(kind) * i + k] is local node k of cell i.
 struct CellBlock {

@@ -83,14 +83,20 @@ index_t PointIndex::nearest_unordered(const Vec3& query, index_t k, index_t* idx
 
 void PointIndex::within(const Vec3& query, double radius, std::vector<Neighbor>& out) const {
     out.clear();
-    if (!(radius > 0.0) || size() == 0) return;
-    const double q[3] = {query.x, query.y, query.z};
     std::vector<std::pair<index_t, double>> hits;
-    nanoflann::SearchParams params(32, 0.0f, false);
-    impl_->tree.radiusSearch(q, radius * radius, hits, params);  // squared radius in 1.4
+    within_unordered(query, radius, hits);
     out.reserve(hits.size());
     for (const auto& [i, d2] : hits) out.push_back({i, d2});
     std::sort(out.begin(), out.end(), closer);
+}
+
+void PointIndex::within_unordered(const Vec3& query, double radius,
+                                  std::vector<std::pair<index_t, double>>& out) const {
+    out.clear();
+    if (!(radius > 0.0) || size() == 0) return;
+    const double q[3] = {query.x, query.y, query.z};
+    // nanoflann 1.4: squared radius, strict comparison; it clears and refills `out`.
+    impl_->tree.radiusSearch(q, radius * radius, out, nanoflann::SearchParams(32, 0.0f, false));
 }
 
 bool PointIndex::any_within(const Vec3& query, double radius) const {

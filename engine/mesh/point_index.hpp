@@ -66,6 +66,11 @@ public:
     // All points strictly closer than `radius`, nearest first, ties by index.
     void within(const Vec3& query, double radius, std::vector<Neighbor>& out) const;
 
+    // The same points as within() as (index, squared distance) in the tree's own order, which
+    // depends only on the points: for callers that sort or reduce the set themselves. `out` is
+    // cleared and refilled, so a caller that keeps it allocates nothing once it is warm.
+    void within_unordered(const Vec3& query, double radius, std::vector<std::pair<index_t, double>>& out) const;
+
     // Whether some point is strictly closer than `radius` (within() would list one): the search
     // stops at the first such point, with no list and no allocation.
     bool any_within(const Vec3& query, double radius) const;

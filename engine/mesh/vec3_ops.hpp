@@ -5,13 +5,23 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/mesh/hybrid_mesh.hpp"
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh {
 
+// The point at p[0..2] of an interleaved xyz array (the Delaunay and tet stores keep their
+// points so, for the predicates).
+inline Vec3 vec3_at(const double* p) { return {p[0], p[1], p[2]}; }
+
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
 inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
+inline Vec3 operator*(const Vec3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+// Divides each coordinate (not a multiplication by 1 / s: the last bit differs).
+inline Vec3 operator/(const Vec3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
+inline Vec3& operator+=(Vec3& a, const Vec3& b) { return a = a + b; }
+inline Vec3& operator-=(Vec3& a, const Vec3& b) { return a = a - b; }
 inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
@@ -19,6 +29,17 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 inline double norm2(const Vec3& a) { return dot(a, a); }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline double distance2(const Vec3& a, const Vec3& b) { return norm2(a - b); }
+// det[a b c] = a · (b × c): positive when (a, b, c) is right-handed.
+inline double det3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
+// a / |a|; a zero vector stays zero.
+inline Vec3 normalized(const Vec3& a) {
+    const double n2 = norm2(a);
+    return n2 > 0 ? a / std::sqrt(n2) : a;
+}
+inline bool all_finite(const Vec3& a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }
+// Per coordinate, as std::min and std::max (the box of a point set).
+inline Vec3 min_each(const Vec3& a, const Vec3& b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
+inline Vec3 max_each(const Vec3& a, const Vec3& b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 // det[b - a, c - a, d - a] / 6 in plain double: positive for a tet in topology.hpp's order. A
 // measure, not a decision (decisions use engine/predicates).
 inline double tet_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

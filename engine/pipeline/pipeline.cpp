@@ -1,13 +1,14 @@
 #include "engine/pipeline/pipeline.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
 #include <unordered_set>
 
+#include "engine/core/timing.hpp"
 #include "engine/surface/face_boundaries.hpp"
+#include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
 #include "engine/pipeline/thread_limit.hpp"
@@ -32,10 +33,6 @@ std::optional<Stage> stage_from_name(std::string_view name) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Nodes of two joined rings closer than this share of St are one node (join_ring_ends).
 constexpr double kRingJoinShare = 1e-6;
@@ -158,8 +155,8 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     // pass leaves triangles too large for the tets beside them, their caps join the field and
     // the faces are meshed again (tet_size_caps.hpp says why). The caps only lower the field,
     // but a capped triangle's successors may sit nearer the pipe, where the tets are smaller
-    // still: two passes were enough on every block measured (2026-12-03: the serpentine lift,
-    // lifts of 2 and 40 pipes), and the last pass is kept whatever it leaves.
+    // still: two passes were enough on every block measured (bench/results/tuning-notes.md),
+    // and the last pass is kept whatever it leaves.
     const index_t first_triangle = out.mesh.face_count(FaceKind::Tri);
     const TetSizeCaps too_large(out.mesh, out.sweep.outer_quads, tet_far_size(in, opt), opt.tets.gradation,
                                 opt.size_growth);
@@ -310,6 +307,7 @@ PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& optio
     run_phases(input, options, until, out);
     out.quality = summarize_quality(out.mesh);
     for (const PhaseReport& p : out.phases) out.seconds += p.seconds;
+    if (options.check) check_result(out, options.progress);
     return out;
 }
 

@@ -75,7 +75,7 @@ std::optional<Stage> stage_from_name(std::string_view name);
 // engine in DiscreteGeometry; run_pipeline itself reads the fields from `sweep` on.
 struct MeshOptions {
     // S, the overall mesh size (edges and surface triangles far from the tubes). 0 (default):
-    // the bounding-box diagonal / 25, at least 1.3 St of the final St (geom/sizing.hpp). A
+    // the bounding-box diagonal / 25, at least 1.3 St of the final St (geom/sizing/sizing.hpp). A
     // given S is never changed.
     double size = 0;
     // St, the hex ring's thickness and axial spacing. 0 (default): the smallest tube
@@ -110,7 +110,7 @@ struct MeshOptions {
     // (engine/pipeline/thread_limit.hpp); 0 (default) lets oneTBB choose (all cores).
     int threads = 0;
     // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
-    // from the solid's volume and area, S, St and the tubes' length (geom/element_budget.hpp).
+    // from the solid's volume and area, S, St and the tubes' length (geom/sizing/element_budget.hpp).
     // 0 (default): what this machine's memory holds (at 150 bytes per element).
     double max_elements = 0;
     // Determinism: the same input and options always give the same mesh, byte for byte, for
@@ -118,8 +118,8 @@ struct MeshOptions {
     // because its Delaunay passes split into tets.partitions parts whatever the thread count;
     // tets.partitions = 0 trades this for one part per thread). There is no faster
     // timing-dependent mode.
-    // Run the validity and conformity check (engine/pipeline/stage_check.hpp) on the result
-    // before handing it out: geom::mesh_file / mesh_model throw when it fails. Default true.
+    // Run the validity and conformity check (engine/pipeline/stage_check.hpp) as run_pipeline's
+    // last stage, so every caller gets a checked mesh; it throws when the mesh fails. Default true.
     bool check = true;
     // Progress of each phase (progress.hpp); empty (default) = silent. The mesh does not
     // depend on it.
@@ -137,7 +137,7 @@ struct PipelineInput {
     SurfaceLookup surfaces;           // face id -> its SurfaceMap (must outlive run_pipeline)
     std::vector<PipelineFace> faces;  // every face of the model, in id order
     // Sizes the geometry asks for at points the rings and the faces' curvature do not see: the
-    // narrow gaps between a hole that is not a tube and a face it passes (geom/gap_sizes.hpp).
+    // narrow gaps between a hole that is not a tube and a face it passes (geom/sizing/gap_sizes.hpp).
     std::vector<SizeSource> gap_sizes;
     // Tubes that continue through a face (an assembly's pipe crossing a joint): their rings are
     // made one there right after the sweep (engine/sweep/ring_joins.hpp). The nodes they leave
@@ -145,8 +145,8 @@ struct PipelineInput {
     std::vector<RingJoin> ring_joins;
 };
 
-// One phase of a run: the engine's phases (run_pipeline) and, before them, geom's (import,
-// tubes, sizes, discretize) and, after them, the check. A new phase is one more entry.
+// One phase of a run: the engine's phases (run_pipeline, the check last) and, before them,
+// geom's (import, tubes, sizes, discretize). A new phase is one more entry.
 struct PhaseReport {
     std::string name;  // "import", ..., "sweep", "surface", "pyramids", "check"
     double seconds = 0;
@@ -167,7 +167,7 @@ struct PipelineResult {
     QualitySummary quality;             // per cell kind: count, min, mean, max, histogram
     double seconds = 0;                 // sum of the phases' seconds
     std::vector<std::string> warnings;  // what the user should know about this mesh, one line each
-    CheckReport check;  // filled by check_result (stage_check.hpp); empty before
+    CheckReport check;  // filled by the check stage (stage_check.hpp); empty when options.check is off
     SweepResult sweep;
     // After Surface: the local sizes the faces were meshed again with, where a first pass left
     // triangles too large for the tets beside them (tet_size_caps.hpp); empty when none was.
@@ -181,8 +181,9 @@ struct PipelineResult {
     PyramidStats pyramid_stats;
 };
 
-// Runs the phases up to and including `until`, then summarises the quality. Throws
-// tubemesh::Error from the first phase that fails (its message names the tube or face).
+// Runs the phases up to and including `until`, summarises the quality, then checks the mesh
+// (options.check; a "check" phase last). Throws tubemesh::Error from the first phase that
+// fails (its message names the tube or face) or when the mesh fails the check.
 // Reports progress per phase through options.progress: sweep counts tubes, surface faces,
 // pyramids front quads (start and end of each phase: the modules run as one call each).
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options = {},

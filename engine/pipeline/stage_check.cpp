@@ -1,9 +1,10 @@
 #include "engine/pipeline/stage_check.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <utility>
+
+#include "engine/core/timing.hpp"
 
 namespace tubemesh {
 
@@ -42,7 +43,7 @@ std::size_t front_defects(const std::vector<index_t>& triangles) {
 }
 
 void check_result(PipelineResult& result, const ProgressCallback& progress) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     PhaseProgress phase(progress, "check", 1);
     result.check = check_mesh(result.mesh);
     std::string failures;
@@ -59,7 +60,7 @@ void check_result(PipelineResult& result, const ProgressCallback& progress) {
     if (!failures.empty())
         throw Error(std::string("the mesh failed the validity and conformity check after the ") +
                     stage_name(result.reached) + " stage, so no file was written: " + failures);
-    PhaseReport r{"check", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), {}, {}};
+    PhaseReport r{"check", seconds_since(t0), {}, {}};
     r.counts = {{"interior faces", double(result.check.interior_faces)},
                 {"free faces", double(result.check.boundary_faces)}};
     r.statistics = {{"volume", result.check.volume}, {"boundary area", result.check.boundary_area}};

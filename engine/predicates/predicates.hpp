@@ -15,6 +15,8 @@
 // predicates_inline.hpp has the same two with the filter inlined, for inner loops.
 #include <cstdint>
 
+#include "engine/mesh/vec3.hpp"
+
 namespace tubemesh::predicates {
 
 // Sign of det[b-a, c-a, d-a]: +1 when (a,b,c,d) is a positively oriented tet (a,b,c
@@ -57,5 +59,16 @@ Contact segment_triangle(const double* p, const double* q, const double* a, cons
 // Triangle abc against triangle def.
 Contact triangle_triangle(const double* a, const double* b, const double* c, const double* d, const double* e,
                           const double* f);
+
+// orient3d and segment_triangle on Vec3 points.
+inline int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z}, pc[3] = {c.x, c.y, c.z}, pd[3] = {d.x, d.y, d.z};
+    return orient3d(pa, pb, pc, pd);
+}
+inline Contact segment_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double pp[3] = {p.x, p.y, p.z}, pq[3] = {q.x, q.y, q.z};
+    const double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z}, pc[3] = {c.x, c.y, c.z};
+    return segment_triangle(pp, pq, pa, pb, pc);
+}
 
 }  // namespace tubemesh::predicates

@@ -16,14 +16,7 @@ namespace tubemesh::pyramids {
 
 namespace {
 
-using P3 = std::array<double, 3>;
-
-P3 raw(const Vec3& v) { return {v.x, v.y, v.z}; }
-
-int orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    const P3 pa = raw(a), pb = raw(b), pc = raw(c), pd = raw(d);
-    return predicates::orient3d(pa.data(), pb.data(), pc.data(), pd.data());
-}
+using predicates::orient3d;
 
 // The triangles a visible face is judged as: (0,1,2) and, for a quad, (0,2,3).
 template <class F>
@@ -49,9 +42,9 @@ double face_distance2(const VisibleFace& face, const Vec3& p) {
 bool inside_pyramid(const NewPyramid& y, const Vec3& x) {
     const auto& p = y.p;
     for (int f = 0; f < 4; ++f)
-        if (orient(p[f], p[(f + 1) % 4], p[4], x) >= 0) return false;
-    return orient(p[0], p[1], p[2], x) > 0 || orient(p[0], p[2], p[3], x) > 0 || orient(p[0], p[1], p[3], x) > 0 ||
-           orient(p[1], p[2], p[3], x) > 0;
+        if (orient3d(p[f], p[(f + 1) % 4], p[4], x) >= 0) return false;
+    return orient3d(p[0], p[1], p[2], x) > 0 || orient3d(p[0], p[2], p[3], x) > 0 || orient3d(p[0], p[1], p[3], x) > 0 ||
+           orient3d(p[1], p[2], p[3], x) > 0;
 }
 
 bool has_edge(const Visible& vis, index_t u, index_t v) {
@@ -272,8 +265,8 @@ Verdict judge(const Front& f, const Candidate& c, const Thresholds& t, const Vis
     y.node[4] = c.id;
     y.p[4] = c.p;
     const auto& p = y.p;
-    if (orient(p[0], p[1], p[2], p[4]) <= 0 || orient(p[0], p[2], p[3], p[4]) <= 0 ||
-        orient(p[0], p[1], p[3], p[4]) <= 0 || orient(p[1], p[2], p[3], p[4]) <= 0)
+    if (orient3d(p[0], p[1], p[2], p[4]) <= 0 || orient3d(p[0], p[2], p[3], p[4]) <= 0 ||
+        orient3d(p[0], p[1], p[3], p[4]) <= 0 || orient3d(p[1], p[2], p[3], p[4]) <= 0)
         return Verdict::NotPositive;
     if (f.quality_floor > 0 && pyramid_scaled_jacobian({p[0], p[1], p[2], p[3], p[4]}) < f.quality_floor)
         return Verdict::LowQuality;

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nanoflann.hpp>
 #include <numbers>
 #include <optional>
 #include <string>
 
+#include "engine/mesh/point_index.hpp"
 #include "engine/pyramids/wedge.hpp"
 #include "engine/quality/quality.hpp"
 
@@ -93,21 +93,20 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     return f;
 }
 
-// nanoflann 1.4 adaptor over the ideal apexes.
-struct IdealCloud {
-    std::span<const Front> fronts;
-    std::size_t kdtree_get_point_count() const { return fronts.size(); }
-    double kdtree_get_pt(std::size_t i, std::size_t dim) const {
-        const Vec3& p = fronts[i].ideal;
-        return dim == 0 ? p.x : dim == 1 ? p.y : p.z;
-    }
-    template <class Box>
-    bool kdtree_get_bbox(Box&) const {
-        return false;
+// The fronts' ideal apexes in a point index (which reads coordinate arrays: hence the copy).
+struct IdealApexes {
+    std::vector<double> x, y, z;
+    PointIndex index;
+    explicit IdealApexes(std::span<const Front> fronts)
+        : x(coordinate(fronts, &Vec3::x)), y(coordinate(fronts, &Vec3::y)), z(coordinate(fronts, &Vec3::z)),
+          index(x, y, z) {}
+    static std::vector<double> coordinate(std::span<const Front> fronts, double Vec3::*c) {
+        std::vector<double> out;
+        out.reserve(fronts.size());
+        for (const Front& f : fronts) out.push_back(f.ideal.*c);
+        return out;
     }
 };
-using IdealTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, IdealCloud, double, index_t>,
-                                                      IdealCloud, 3, index_t>;
 
 bool shares_node(const Front& f, const Front& g) {
     for (index_t a : f.node)
@@ -141,20 +140,17 @@ std::vector<double> apart_scales(std::span<const Front> fronts, const PyramidOpt
     if (!(opt.apart_factor > 0) || n < 2) return scale;
     double largest_h = 0;
     for (const Front& f : fronts) largest_h = std::max(largest_h, f.h);
-    IdealCloud cloud{fronts};
-    IdealTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
+    const IdealApexes apexes(fronts);
     const auto keeps_apex = [](const Front& f) { return f.wedge || has_wide(f); };
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::vector<std::pair<index_t, double>> hits;
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const Front& f = fronts[i];
             if (keeps_apex(f)) continue;
-            const double q[3] = {f.ideal.x, f.ideal.y, f.ideal.z};
             // Every pair's distance asked for below is within this (rings of very different
             // sizes would otherwise make the small fronts search as far as the largest asks).
             const double radius = opt.apart_factor * 0.5 * (f.h + largest_h);
-            tree.radiusSearch(q, radius * radius, hits, nanoflann::SearchParams(32, 0.0f, false));
+            apexes.index.within_unordered(f.ideal, radius, hits);
             for (const auto& [j, d2] : hits) {
                 const Front& g = fronts[j];
                 if (j == i || shares_node(f, g)) continue;
@@ -201,18 +197,15 @@ Adjacency front_neighbours(std::span<const Front> fronts) {
         largest_reach = std::max(largest_reach, f.reach);
     }
 
-    IdealCloud cloud{fronts};
-    IdealTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
+    const IdealApexes apexes(fronts);
 
     std::vector<std::vector<index_t>> rows(n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::vector<std::pair<index_t, double>> hits;
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const Front& f = fronts[i];
-            const double q[3] = {f.ideal.x, f.ideal.y, f.ideal.z};
             const double radius = std::max(f.query_radius + largest_reach, largest_query + f.reach);
-            tree.radiusSearch(q, radius * radius, hits, nanoflann::SearchParams(32, 0.0f, false));
+            apexes.index.within_unordered(f.ideal, radius, hits);
             auto& row = rows[i];
             for (const auto& [j, d2] : hits) {
                 if (j == i) continue;

@@ -15,14 +15,6 @@ namespace tubemesh {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// Small vector algebra. Closed-form 3x3 only: an Eigen decomposition per corner would cost
-// compile time and run time for nothing.
-
-
-// det[e1 e2 e3] = e1 · (e2 × e3): positive when (e1, e2, e3) is right-handed.
-double det3(const Vec3& e1, const Vec3& e2, const Vec3& e3) { return dot(e1, cross(e2, e3)); }
-
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // ---------------------------------------------------------------------------------------

@@ -4,7 +4,7 @@
 
 #include "engine/surface/boundary_triangulation.hpp"
 #include "engine/surface/frontal_refinement.hpp"
-#include "engine/surface/surface_optimization.hpp"
+#include "engine/surface/surface_optimisation.hpp"
 #include "engine/surface/uv_insertion.hpp"
 #include "engine/surface/uv_mesh.hpp"
 
@@ -30,7 +30,7 @@ public:
     Inserter inserter;
     BoundaryScratch boundary;
     FrontalRefiner refiner;
-    SurfaceOptimizer optimizer;
+    SurfaceOptimiser optimiser;
 };
 
 FaceMesher::FaceMesher() : state_(std::make_unique<FaceMesherState>()) {}
@@ -64,9 +64,9 @@ void check_options(const FaceMeshOptions& o) {
         throw Error("surface meshing: accept_ratio must be in [1, 10), got " + std::to_string(o.accept_ratio));
     if (!(o.min_spacing >= 0.0 && o.min_spacing < 1.0))
         throw Error("surface meshing: min_spacing must be in [0, 1), got " + std::to_string(o.min_spacing));
-    if (o.optimization_passes < 0)
-        throw Error("surface meshing: optimization_passes must not be negative, got " +
-                    std::to_string(o.optimization_passes));
+    if (o.optimisation_passes < 0)
+        throw Error("surface meshing: optimisation_passes must not be negative, got " +
+                    std::to_string(o.optimisation_passes));
 }
 
 }  // namespace
@@ -80,7 +80,7 @@ void FaceMesher::mesh(const SurfaceMap& surface, const FaceBoundary& boundary, c
     triangulate_boundary(surface, boundary, size, s.mesh, s.inserter, s.boundary);
     const index_t first_interior = s.mesh.vertex_count();
     s.refiner.run(surface, size, options, boundary.node_count(), s.mesh, s.inserter, out.stats);
-    s.optimizer.run(surface, options.optimization_passes, first_interior, s.mesh, out.stats);
+    s.optimiser.run(surface, options.optimisation_passes, first_interior, s.mesh, out.stats);
 
     // Output numbering: boundary nodes as given, then the interior vertices that survived the
     // optimisation, in creation order.

@@ -8,7 +8,7 @@
 // the surface's first fundamental form J^T J, so triangles that are round in space come out
 // round whatever the parametrisation stretches; the target size comes from a SizeField in
 // space. Edge flips, smoothing and collapses, judged by angles in space, finish the mesh
-// (surface_optimization.hpp).
+// (surface_optimisation.hpp).
 //
 // A pole or a cone's apex is a degenerate boundary edge: several loop occurrences of one node
 // at different uv. Triangles between two of them collapse to nothing in space and are left
@@ -64,7 +64,7 @@ struct FaceMeshOptions {
     double min_spacing = 0.6;
     // Rounds of (smoothing sweep + flip sweep + collapse sweep) after refinement, then at most
     // as many grading sweeps; each stops early when it changes nothing.
-    int optimization_passes = 3;
+    int optimisation_passes = 3;
 };
 
 struct FaceMeshStats {

@@ -7,7 +7,7 @@
 // local size) wants size h_i at x_i; away from it the size may grow by at most g per unit
 // distance, up to the overall size S. Two elements that touch lie about one size apart, so
 // their target sizes differ by a factor of at most about 1 + g: g = 0.25 leaves room under the
-// issue's neighbour ratio of 1.5 for the scatter a mesher adds to any target.
+// surface's neighbour ratio of 1.5 for the scatter a mesher adds to any target.
 //
 // Whatever the sources, |h(x) - h(y)| <= g·|x - y| everywhere, which is what makes h usable
 // as the background size of any later step (the tet mesher's interior points included).

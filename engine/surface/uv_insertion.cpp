@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/surface/uv_predicates.hpp"
 
 namespace tubemesh::surface {
@@ -65,11 +66,6 @@ bool in_circle(Uv a, Uv b, Uv c, Uv p, const MetricFactor& f) {
     return det > 0;
 }
 
-double distance(const Vec3& a, const Vec3& b) {
-    const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
 }  // namespace
 
 bool Inserter::build_cavity(UvMesh& mesh, index_t t0, Uv p, const MetricFactor& f) {
@@ -130,7 +126,7 @@ InsertStatus Inserter::insert(UvMesh& mesh, index_t start, const VertexData& v, 
     if (!build_cavity(mesh, t0, v.uv, MetricFactor(v.metric))) return InsertStatus::NotStarShaped;
     if (min_distance > 0)
         for (const RimEdge& e : rim_)
-            if (distance(mesh.xyz[e.a], v.xyz) < min_distance) return InsertStatus::TooClose;
+            if (norm(mesh.xyz[e.a] - v.xyz) < min_distance) return InsertStatus::TooClose;
 
     const std::uint8_t inherited = mesh.flags[t0] & kInside;
     vertex = mesh.add_vertex(v);

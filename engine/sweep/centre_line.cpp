@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/types.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/sweep/frames.hpp"
 
 namespace tubemesh::sweep {
@@ -14,50 +15,50 @@ namespace {
 constexpr double kMinReferenceSine = 0.5;
 
 bool usable_reference(const TubeStation& st) {
-    const V3 t = to_eigen(st.tangent).normalized(), r = to_eigen(st.reference);
-    if (!r.allFinite() || !t.allFinite()) return false;
-    const double len = r.norm();
-    return len > 0 && (r - t.dot(r) * t).norm() >= kMinReferenceSine * len;
+    const Vec3 t = normalized(st.tangent), r = st.reference;
+    if (!all_finite(r) || !all_finite(t)) return false;
+    const double len = norm(r);
+    return len > 0 && norm(r - dot(t, r) * t) >= kMinReferenceSine * len;
 }
 
-V3 orthonormal_to(const V3& v, const V3& t) {
-    const V3 p = v - t.dot(v) * t;
-    return p.normalized();
+Vec3 orthonormal_to(const Vec3& v, const Vec3& t) {
+    const Vec3 p = v - dot(t, v) * t;
+    return normalized(p);
 }
 
 // Station at fraction u of the segment from a to b, `chord` apart.
 Station between(const TubeStation& a, const TubeStation& b, double chord, double u) {
-    const V3 ca = to_eigen(a.centre), cb = to_eigen(b.centre);
-    const V3 ta = to_eigen(a.tangent).normalized() * chord, tb = to_eigen(b.tangent).normalized() * chord;
+    const Vec3 ca = a.centre, cb = b.centre;
+    const Vec3 ta = normalized(a.tangent) * chord, tb = normalized(b.tangent) * chord;
     const double u2 = u * u, u3 = u2 * u;
     Station s;
     s.centre = (2 * u3 - 3 * u2 + 1) * ca + (u3 - 2 * u2 + u) * ta + (-2 * u3 + 3 * u2) * cb + (u3 - u2) * tb;
-    const V3 d = (6 * u2 - 6 * u) * ca + (3 * u2 - 4 * u + 1) * ta + (-6 * u2 + 6 * u) * cb + (3 * u2 - 2 * u) * tb;
-    s.tangent = d.normalized();
-    s.reference = orthonormal_to((1 - u) * to_eigen(a.reference) + u * to_eigen(b.reference), s.tangent);
+    const Vec3 d = (6 * u2 - 6 * u) * ca + (3 * u2 - 4 * u + 1) * ta + (-6 * u2 + 6 * u) * cb + (3 * u2 - 2 * u) * tb;
+    s.tangent = normalized(d);
+    s.reference = orthonormal_to((1 - u) * a.reference + u * b.reference, s.tangent);
     s.radius = (1 - u) * a.radius + u * b.radius;
     return s;
 }
 
 Station exact(const TubeStation& a) {
     Station s;
-    s.centre = to_eigen(a.centre);
-    s.tangent = to_eigen(a.tangent).normalized();
-    s.reference = to_eigen(a.reference);
+    s.centre = a.centre;
+    s.tangent = normalized(a.tangent);
+    s.reference = a.reference;
     s.radius = a.radius;
     return s;
 }
 
 }  // namespace
 
-CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const V3& first_node) {
+CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const Vec3& first_node) {
     if (input.size() < 2) throw Error("the centre line has fewer than two stations");
     std::vector<double> at(input.size(), 0.0);  // chord length from the first station
     for (std::size_t i = 0; i < input.size(); ++i) {
-        const V3 t = to_eigen(input[i].tangent);
-        if (!(t.norm() > 0) || !t.allFinite()) throw Error("centre-line station " + std::to_string(i) + " has no tangent");
+        const Vec3 t = input[i].tangent;
+        if (!(norm(t) > 0) || !all_finite(t)) throw Error("centre-line station " + std::to_string(i) + " has no tangent");
         if (i == 0) continue;
-        const double chord = (to_eigen(input[i].centre) - to_eigen(input[i - 1].centre)).norm();
+        const double chord = norm(input[i].centre - input[i - 1].centre);
         if (!(chord > 0)) throw Error("centre-line stations " + std::to_string(i - 1) + " and " + std::to_string(i) +
                                       " coincide");
         at[i] = at[i - 1] + chord;
@@ -88,7 +89,7 @@ CentreLine resample_centre_line(std::span<const TubeStation> input, double step,
     line.stations.back().s = line.length;
 
     if (line.frame_fallback) {
-        std::vector<V3> centres, tangents;
+        std::vector<Vec3> centres, tangents;
         for (const Station& st : line.stations) {
             centres.push_back(st.centre);
             tangents.push_back(st.tangent);

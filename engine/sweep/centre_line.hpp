@@ -4,14 +4,14 @@
 #include <vector>
 
 #include "engine/geometry/tube_data.hpp"
-#include "engine/sweep/vector_math.hpp"
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh::sweep {
 
 struct Station {
-    V3 centre;
-    V3 tangent;    // unit
-    V3 reference;  // unit, orthogonal to tangent: angle 0 of the cross-section
+    Vec3 centre;
+    Vec3 tangent;    // unit
+    Vec3 reference;  // unit, orthogonal to tangent: angle 0 of the cross-section
     double radius = 0;
     double s = 0;  // distance along the centre line from the first station
 };
@@ -33,6 +33,6 @@ struct CentreLine {
 // When an input reference is zero, not finite or within 30 degrees of its tangent, all are
 // replaced by rotation-minimising frames started at `first_node` (ring1[0]).
 // Throws tubemesh::Error for zero tangents or repeated stations.
-CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const V3& first_node);
+CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const Vec3& first_node);
 
 }  // namespace tubemesh::sweep

@@ -6,19 +6,20 @@
 #include <vector>
 
 #include "engine/core/types.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh::sweep {
 namespace {
 
-void copy_end(const TubePlan& plan, int e, int station, std::span<V3> nodes) {
+void copy_end(const TubePlan& plan, int e, int station, std::span<Vec3> nodes) {
     const std::size_t per_station = static_cast<std::size_t>((plan.layers + 1) * plan.n);
-    const std::vector<V3>& end = plan.ends[static_cast<std::size_t>(e)].node;
+    const std::vector<Vec3>& end = plan.ends[static_cast<std::size_t>(e)].node;
     std::copy(end.begin(), end.end(), nodes.begin() + static_cast<std::ptrdiff_t>(per_station * station));
 }
 
 }  // namespace
 
-double place_stations(const TubePlan& plan, int first, int last, std::span<V3> nodes) {
+double place_stations(const TubePlan& plan, int first, int last, std::span<Vec3> nodes) {
     const std::size_t n = static_cast<std::size_t>(plan.n);
     const std::size_t per_station = (static_cast<std::size_t>(plan.layers) + 1) * n;
     std::vector<WallCursor> cursor(n);
@@ -36,11 +37,11 @@ double place_stations(const TubePlan& plan, int first, int last, std::span<V3> n
         }
         const Station& st = plan.line.stations[static_cast<std::size_t>(i)];
         const double w0 = plan.weight(0, st.s), w1 = plan.weight(1, st.s);
-        const V3 binormal = st.tangent.cross(st.reference);
-        V3* out = nodes.data() + per_station * static_cast<std::size_t>(i);
+        const Vec3 binormal = cross(st.tangent, st.reference);
+        Vec3* out = nodes.data() + per_station * static_cast<std::size_t>(i);
         for (std::size_t k = 0; k < n; ++k) {
             const double a = plan.angle(static_cast<int>(k), st.s);
-            const V3 dir = std::cos(a) * st.reference + std::sin(a) * binormal;
+            const Vec3 dir = std::cos(a) * st.reference + std::sin(a) * binormal;
             const double wall_depth = w0 * depth0[k] + w1 * depth1[k];
             // A chunk's first station: the neighbour's face and uv are the best guess.
             if (cursor[k].face < 0 && k > 0) cursor[k] = cursor[k - 1];

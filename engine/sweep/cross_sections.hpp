@@ -14,6 +14,6 @@ namespace tubemesh::sweep {
 //   + w·(depth_jk − depth_0k)·tangent,
 // summing w·depth over both ends. A call starts its wall projections afresh, so the result
 // does not depend on how the stations are split between calls.
-double place_stations(const TubePlan& plan, int first, int last, std::span<V3> nodes);
+double place_stations(const TubePlan& plan, int first, int last, std::span<Vec3> nodes);
 
 }  // namespace tubemesh::sweep

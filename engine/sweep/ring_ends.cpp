@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/core/types.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/sweep/frames.hpp"
 
 namespace tubemesh::sweep {
@@ -17,7 +18,7 @@ constexpr double kMinHostSine = 0.1;
 constexpr int kMaxNewtonSteps = 50;
 
 struct HostHit {
-    V3 point;
+    Vec3 point;
     Uv uv;
     double depth;
 };
@@ -25,24 +26,24 @@ struct HostHit {
 // Where the line origin + d·t meets the host, by Newton steps on the signed distance from
 // the surface starting at d = depth; each step projects onto the host (with the previous
 // foot point's uv as hint) and moves along the line to the foot point's tangent plane.
-HostHit hit_host(const SurfaceMap& host, const V3& origin, const V3& t, double depth, std::optional<Uv> hint,
+HostHit hit_host(const SurfaceMap& host, const Vec3& origin, const Vec3& t, double depth, std::optional<Uv> hint,
                  double scale) {
     for (int step = 0; step < kMaxNewtonSteps; ++step) {
-        const Projection pr = host.project(to_vec3(origin + depth * t), hint);
+        const Projection pr = host.project(origin + depth * t, hint);
         if (!pr.ok) throw Error("no foot point on host face " + std::to_string(host.face()));
-        const V3 normal = to_eigen(host.normal(pr.uv));
-        const double across = normal.dot(t);
+        const Vec3 normal = host.normal(pr.uv);
+        const double across = dot(normal, t);
         if (!(std::abs(across) >= kMinHostSine))
             throw Error("host face " + std::to_string(host.face()) +
                         " is nearly parallel to the tube's axis where the ring meets it");
-        const double move = (origin + depth * t - to_eigen(pr.point)).dot(normal) / across;
+        const double move = dot(origin + depth * t - pr.point, normal) / across;
         depth -= move;
         hint = pr.uv;
         if (std::abs(move) <= 1e-13 * scale) break;
     }
-    const Projection pr = host.project(to_vec3(origin + depth * t), hint);
+    const Projection pr = host.project(origin + depth * t, hint);
     if (!pr.ok) throw Error("no foot point on host face " + std::to_string(host.face()));
-    return {to_eigen(pr.point), pr.uv, depth};
+    return {pr.point, pr.uv, depth};
 }
 
 // A node closer than this to both surfaces, over the radius, is on the curve: far below
@@ -57,27 +58,27 @@ constexpr double kMaxSnapMove = 0.05;
 // 1 - cos² of the angle between the two surfaces below which they are taken as tangent.
 constexpr double kMinCrossing = 1e-8;
 
-V3 snap_node(const V3& start, const WallProjection& wall, WallCursor& cursor, const SurfaceMap& host,
-             std::optional<Uv>& hint, double radius, const std::string& name) {
-    V3 x = start;
+Vec3 snap_node(const Vec3& start, const WallProjection& wall, WallCursor& cursor, const SurfaceMap& host,
+               std::optional<Uv>& hint, double radius, const std::string& name) {
+    Vec3 x = start;
     for (int step = 0;; ++step) {
         const WallFoot w = wall.project(x, cursor);
-        const Projection h = host.project(to_vec3(x), hint);
+        const Projection h = host.project(x, hint);
         if (!h.ok) throw Error(name + " has no foot point on host face " + std::to_string(host.face()));
         hint = h.uv;
         if ((w.distance <= kSnapTolerance * radius && h.distance <= kSnapTolerance * radius) || step == kMaxSnapSteps)
             break;
-        const V3 nw = wall.normal(cursor);
-        const V3 nh = to_eigen(host.normal(h.uv));
-        const double c = nw.dot(nh), crossing = 1 - c * c;
+        const Vec3 nw = wall.normal(cursor);
+        const Vec3 nh = host.normal(h.uv);
+        const double c = dot(nw, nh), crossing = 1 - c * c;
         if (!(crossing > kMinCrossing))
             throw Error(name + ": the wall and host face " + std::to_string(host.face()) + " meet tangentially there");
         // x - a·nw - b·nh on both tangent planes: a + c·b = dw, c·a + b = dh.
-        const double dw = nw.dot(x - w.point), dh = nh.dot(x - to_eigen(h.point));
+        const double dw = dot(nw, x - w.point), dh = dot(nh, x - h.point);
         x -= ((dw - c * dh) / crossing) * nw + ((dh - c * dw) / crossing) * nh;
     }
-    if (!((x - start).norm() <= kMaxSnapMove * radius))
-        throw Error(name + " lies " + std::to_string((x - start).norm() / radius) +
+    if (!(norm(x - start) <= kMaxSnapMove * radius))
+        throw Error(name + " lies " + std::to_string(norm(x - start) / radius) +
                     " radii from where the wall meets host face " + std::to_string(host.face()));
     return x;
 }
@@ -93,7 +94,7 @@ std::vector<Vec3> snap_to_wall_and_host(std::span<const Vec3> ring, const WallPr
     std::optional<Uv> hint;
     for (std::size_t k = 0; k < ring.size(); ++k) {
         const std::string name = std::string(which) + " node " + std::to_string(k);
-        out.push_back(to_vec3(snap_node(to_eigen(ring[k]), wall, cursor, host, hint, radius, name)));
+        out.push_back(snap_node(ring[k], wall, cursor, host, hint, radius, name));
     }
     return out;
 }
@@ -101,13 +102,13 @@ std::vector<Vec3> snap_to_wall_and_host(std::span<const Vec3> ring, const WallPr
 EndSection ring_section(std::span<const Vec3> ring, const Station& station) {
     EndSection e;
     for (const Vec3& p : ring) {
-        const V3 d = to_eigen(p) - station.centre;
-        const double along = d.dot(station.tangent);
-        e.node.push_back(to_eigen(p));
+        const Vec3 d = p - station.centre;
+        const double along = dot(d, station.tangent);
+        e.node.push_back(p);
         e.uv.push_back({});
         e.depth.push_back(along);
         e.angle.push_back(signed_angle(station.reference, d, station.tangent));
-        e.radius.push_back((d - along * station.tangent).norm());
+        e.radius.push_back(norm(d - along * station.tangent));
     }
     return e;
 }
@@ -129,18 +130,18 @@ void place_on_host(EndSection& section, const Station& station, const SurfaceMap
     section.node.resize((layers + 1) * n);
     section.uv.resize((layers + 1) * n);
     section.depth.resize((layers + 1) * n);
-    const V3 binormal = station.tangent.cross(station.reference);
+    const Vec3 binormal = cross(station.tangent, station.reference);
     for (std::size_t k = 0; k < n; ++k) {
-        const Projection wall = host.project(to_vec3(section.node[k]), std::nullopt);
+        const Projection wall = host.project(section.node[k], std::nullopt);
         if (!wall.ok) throw Error("ring node " + std::to_string(k) + " has no foot point on host face " +
                                   std::to_string(host.face()));
         section.uv[k] = wall.uv;
         const double a = section.angle[k];
-        const V3 dir = std::cos(a) * station.reference + std::sin(a) * binormal;
+        const Vec3 dir = std::cos(a) * station.reference + std::sin(a) * binormal;
         std::optional<Uv> hint = wall.uv;
         double depth = section.depth[k];
         for (std::size_t j = 1; j <= layers; ++j) {
-            const V3 origin = station.centre + (section.radius[k] + offsets[j]) * dir;
+            const Vec3 origin = station.centre + (section.radius[k] + offsets[j]) * dir;
             const HostHit hit = hit_host(host, origin, station.tangent, depth, hint, scale);
             section.node[j * n + k] = hit.point;
             section.uv[j * n + k] = hit.uv;

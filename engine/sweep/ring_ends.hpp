@@ -13,7 +13,7 @@ namespace tubemesh::sweep {
 
 // One end's nodes, j-major: entry j·n + k is radial node j of circumferential node k.
 struct EndSection {
-    std::vector<V3> node;       // j = 0: the ring node; j >= 1: on the host face
+    std::vector<Vec3> node;     // j = 0: the ring node; j >= 1: on the host face
     std::vector<Uv> uv;         // on the host face
     // Signed distance of each node from the end station's normal plane, along its tangent.
     std::vector<double> depth;

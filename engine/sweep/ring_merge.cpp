@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/sweep/ring_cells.hpp"
 
 namespace tubemesh::sweep {
@@ -25,11 +26,11 @@ RingEnd outer_polygon(const TubePlan& p, const TubeData& tube, int e, index_t fi
     const std::size_t n = static_cast<std::size_t>(p.n), outer = static_cast<std::size_t>(p.layers) * n;
     // The solid's outward normal on the host points back along the tube at its first end and
     // onwards at its last (the tube runs into the solid from ring1's face to ring2's).
-    const V3 outward = e == 0 ? V3(-st.tangent) : V3(st.tangent);
-    V3 normal = V3::Zero();
+    const Vec3 outward = e == 0 ? -st.tangent : st.tangent;
+    Vec3 normal{0, 0, 0};
     for (std::size_t k = 0; k < n; ++k)
-        normal += (end.node[outer + k] - st.centre).cross(end.node[outer + (k + 1) % n] - st.centre);
-    const bool reverse = normal.dot(outward) > 0;  // counter-clockwise seen from outside
+        normal += cross(end.node[outer + k] - st.centre, end.node[outer + (k + 1) % n] - st.centre);
+    const bool reverse = dot(normal, outward) > 0;  // counter-clockwise seen from outside
 
     RingEnd r;
     r.host = e == 0 ? tube.host1 : tube.host2;
@@ -38,7 +39,7 @@ RingEnd outer_polygon(const TubePlan& p, const TubeData& tube, int e, index_t fi
     for (std::size_t q = 0; q < n; ++q) {
         const std::size_t k = reverse ? (n - q) % n : q;
         r.outer_nodes.push_back(cells.node(r.station, static_cast<index_t>(p.layers), static_cast<index_t>(k)));
-        r.outer_xyz.push_back(to_vec3(end.node[outer + k]));
+        r.outer_xyz.push_back(end.node[outer + k]);
         r.outer_uv.push_back(end.uv[outer + k]);
     }
     // Continuous across a periodic host's seam: each uv within half a period of the one before.
@@ -60,7 +61,7 @@ void put(std::vector<index_t>& to, std::size_t at, const Ids& ids) {
 // Numbers every tube's nodes, hexes and quads after those before it, names its groups, and
 // fills in everything about it but the mesh arrays. Returns the mesh's new quad count.
 std::size_t describe(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::span<const TubePlan> plans,
-                     const std::vector<std::vector<V3>>& nodes, std::span<const RingQuality> quality,
+                     const std::vector<std::vector<Vec3>>& nodes, std::span<const RingQuality> quality,
                      const SweepOptions& options, SweepResult& result) {
     SweepStats& stats = result.stats;
     stats.tubes = static_cast<index_t>(tubes.size());
@@ -123,16 +124,16 @@ std::size_t describe(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::
 // One chunk's part of the mesh arrays and of the result's quad arrays: the nodes of its
 // stations, the hex layers and lateral quads starting there, and the end quads of an end
 // station it holds.
-void write(HybridMesh& mesh, const TubePlan& p, const std::vector<V3>& nodes, const StationChunk& chunk,
+void write(HybridMesh& mesh, const TubePlan& p, const std::vector<Vec3>& nodes, const StationChunk& chunk,
            const SweepOptions& options, SweepResult& result) {
     const TubeRing& ring = result.rings[chunk.tube];
     const index_t n = ring.circumferential, layers = ring.radial_layers, steps = ring.stations - 1;
     const std::size_t per_station = (std::size_t{layers} + 1) * n;
     for (std::size_t v = per_station * static_cast<std::size_t>(chunk.first);
          v < per_station * static_cast<std::size_t>(chunk.last); ++v) {
-        mesh.x[ring.first_node + v] = nodes[v].x();
-        mesh.y[ring.first_node + v] = nodes[v].y();
-        mesh.z[ring.first_node + v] = nodes[v].z();
+        mesh.x[ring.first_node + v] = nodes[v].x;
+        mesh.y[ring.first_node + v] = nodes[v].y;
+        mesh.z[ring.first_node + v] = nodes[v].z;
     }
     const RingCells cells = cells_of(p, ring.first_node);
     CellBlock& hexes = mesh.block(CellKind::Hex);
@@ -170,7 +171,7 @@ void write(HybridMesh& mesh, const TubePlan& p, const std::vector<V3>& nodes, co
 }  // namespace
 
 SweepResult merge_rings(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::span<const TubePlan> plans,
-                        const std::vector<std::vector<V3>>& nodes, std::span<const RingQuality> quality,
+                        const std::vector<std::vector<Vec3>>& nodes, std::span<const RingQuality> quality,
                         std::span<const StationChunk> chunks, const SweepOptions& options) {
     std::size_t new_nodes = 0;
     for (const auto& v : nodes) new_nodes += v.size();

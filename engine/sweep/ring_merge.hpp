@@ -15,7 +15,7 @@ namespace tubemesh::sweep {
 // describes them. Throws tubemesh::Error, before touching the mesh, when the node count would
 // pass 2^32.
 SweepResult merge_rings(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::span<const TubePlan> plans,
-                        const std::vector<std::vector<V3>>& nodes, std::span<const RingQuality> quality,
+                        const std::vector<std::vector<Vec3>>& nodes, std::span<const RingQuality> quality,
                         std::span<const StationChunk> chunks, const SweepOptions& options);
 
 }  // namespace tubemesh::sweep

@@ -16,7 +16,7 @@ void RingQuality::add(const RingQuality& later) {
     if (folded_layer < 0) folded_layer = later.folded_layer;
 }
 
-RingQuality measure_layers(const TubePlan& plan, std::span<const V3> nodes, int first, int last) {
+RingQuality measure_layers(const TubePlan& plan, std::span<const Vec3> nodes, int first, int last) {
     RingQuality q;
     const RingCells cells{0, static_cast<index_t>(plan.n), static_cast<index_t>(plan.layers), plan.turn};
     for (index_t i = static_cast<index_t>(first); i < static_cast<index_t>(last); ++i)
@@ -24,7 +24,7 @@ RingQuality measure_layers(const TubePlan& plan, std::span<const V3> nodes, int 
             for (index_t k = 0; k < cells.n; ++k) {
                 const std::array<index_t, 8> ids = cells.hex(i, j, k);
                 std::array<Vec3, 8> hex;
-                for (std::size_t v = 0; v < 8; ++v) hex[v] = to_vec3(nodes[ids[v]]);
+                for (std::size_t v = 0; v < 8; ++v) hex[v] = nodes[ids[v]];
                 const HexQuality h = hex_quality(hex);
                 q.min_jacobian = std::min(q.min_jacobian, h.scaled_jacobian);
                 q.sum_jacobian += h.scaled_jacobian;

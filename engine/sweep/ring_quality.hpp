@@ -22,6 +22,6 @@ struct RingQuality {
 
 // J_m and condition number of the hexes of layers [first, last) of the plan's ring (layer i lies
 // between stations i and i+1).
-RingQuality measure_layers(const TubePlan& plan, std::span<const V3> nodes, int first, int last);
+RingQuality measure_layers(const TubePlan& plan, std::span<const Vec3> nodes, int first, int last);
 
 }  // namespace tubemesh::sweep

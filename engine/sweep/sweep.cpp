@@ -19,7 +19,6 @@ namespace {
 
 using sweep::RingQuality;
 using sweep::TubePlan;
-using sweep::V3;
 
 std::string tube_name(const std::vector<TubeData>& tubes, std::size_t t) {
     std::string s = "tube " + std::to_string(t + 1) + " (wall face";
@@ -75,7 +74,7 @@ SweepResult sweep_tubes(HybridMesh& mesh, const std::vector<TubeData>& tubes, co
     const std::vector<sweep::StationChunk> chunks =
         sweep::station_chunks(plans.size(), [&](std::size_t t) { return plans[t].stations(); });
     const auto tube_of_chunk = [&](std::size_t c) { return chunks[c].tube; };
-    std::vector<std::vector<V3>> nodes(tubes.size());
+    std::vector<std::vector<Vec3>> nodes(tubes.size());
     for (std::size_t t = 0; t < tubes.size(); ++t)
         nodes[t].resize(static_cast<std::size_t>(plans[t].stations()) * static_cast<std::size_t>(plans[t].layers + 1) *
                         static_cast<std::size_t>(plans[t].n));

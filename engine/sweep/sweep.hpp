@@ -59,7 +59,7 @@ using SurfaceLookup = std::function<const SurfaceMap*(index_t face)>;
 // Above the floor the ring's quads come out about square (mid-circumference / St); multiples
 // of 4 keep opposite nodes opposite. The floor of 8 is for hex quality: on a straight pipe
 // every ring hex has J_m = cos(π/n), 0.924 for n = 8, which leaves the room bends and oblique
-// ends need above issue 4's bars (J_m >= 0.5, mean >= 0.70). n = 4, the paper's (Example 1:
+// ends need above the ring bars (J_m >= 0.5, mean >= 0.70). n = 4, the paper's (Example 1:
 // r = 0.02, St about 0.14; J_m 0.70 in its Table 1), starts at cos(π/4) = 0.707 and curved
 // pipes fall below the 0.70 mean (0.686-0.700 on 5 of the 50 random synthetic rings of
 // sweep_random_test); it is there with an explicit n. Default St = 2r and any St >= 0.92 r

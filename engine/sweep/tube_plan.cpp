@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/core/types.hpp"
+#include "engine/sweep/frames.hpp"
 #include "engine/sweep/ring_dimensions.hpp"
 
 namespace tubemesh::sweep {
@@ -97,7 +98,7 @@ TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& sur
     p.sweep_size = tube_sweep_size(index, options, p.radius);
     p.offsets = radial_offsets(p.sweep_size, p.layers, options.grading);
     p.step = axial_step(p.radius, p.offsets, p.n, options.axial_aspect, options.max_condition);
-    p.line = resample_centre_line(tube.stations, p.step, to_eigen(ring1.front()));
+    p.line = resample_centre_line(tube.stations, p.step, ring1.front());
 
     const Station& first = p.line.stations.front();
     const Station& last = p.line.stations.back();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/core/types.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh::sweep {
 namespace {
@@ -31,8 +32,8 @@ bool within(const ParamRange& r, double t) {
 
 bool on_face(const SurfaceMap& s, Uv uv) { return within(s.u_range(), uv.u) && within(s.v_range(), uv.v); }
 
-double box_distance(const V3& lo, const V3& hi, const V3& p) {
-    return (p.cwiseMax(lo).cwiseMin(hi) - p).norm();
+double box_distance(const Vec3& lo, const Vec3& hi, const Vec3& p) {
+    return norm(min_each(max_each(p, lo), hi) - p);
 }
 
 }  // namespace
@@ -41,20 +42,21 @@ WallProjection::WallProjection(std::vector<const SurfaceMap*> faces, double radi
     : faces_(std::move(faces)), radius_(radius) {
     for (const SurfaceMap* s : faces_) {
         const ParamRange u = s->u_range(), v = s->v_range();
-        Box b{V3::Constant(std::numeric_limits<double>::infinity()), V3::Constant(-std::numeric_limits<double>::infinity())};
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        Box b{{inf, inf, inf}, {-inf, -inf, -inf}};
         for (int i = 0; i < kBoxSamples; ++i)
             for (int j = 0; j < kBoxSamples; ++j) {
                 const double fu = static_cast<double>(i) / (kBoxSamples - 1), fv = static_cast<double>(j) / (kBoxSamples - 1);
-                const V3 p = to_eigen(s->point({u.lo + fu * (u.hi - u.lo), v.lo + fv * (v.hi - v.lo)}));
-                b.lo = b.lo.cwiseMin(p);
-                b.hi = b.hi.cwiseMax(p);
+                const Vec3 p = s->point({u.lo + fu * (u.hi - u.lo), v.lo + fv * (v.hi - v.lo)});
+                b.lo = min_each(b.lo, p);
+                b.hi = max_each(b.hi, p);
             }
         boxes_.push_back(b);
     }
 }
 
-std::optional<Projection> WallProjection::try_face(int f, const V3& p, std::optional<Uv> hint) const {
-    const Projection pr = faces_[static_cast<std::size_t>(f)]->project(to_vec3(p), hint);
+std::optional<Projection> WallProjection::try_face(int f, const Vec3& p, std::optional<Uv> hint) const {
+    const Projection pr = faces_[static_cast<std::size_t>(f)]->project(p, hint);
     if (!pr.ok || !std::isfinite(pr.distance)) return std::nullopt;
     return pr;
 }
@@ -63,11 +65,11 @@ bool WallProjection::acceptable(int f, const Projection& pr) const {
     return pr.distance <= kTrustedDistance * radius_ && on_face(*faces_[static_cast<std::size_t>(f)], pr.uv);
 }
 
-WallFoot WallProjection::project(const V3& p, WallCursor& cursor) const {
+WallFoot WallProjection::project(const Vec3& p, WallCursor& cursor) const {
     if (cursor.face >= 0) {
         if (auto pr = try_face(cursor.face, p, cursor.uv); pr && acceptable(cursor.face, *pr)) {
             cursor.uv = pr->uv;
-            return {to_eigen(pr->point), pr->distance};
+            return {pr->point, pr->distance};
         }
     }
     std::vector<int> order(faces_.size());
@@ -96,19 +98,19 @@ WallFoot WallProjection::project(const V3& p, WallCursor& cursor) const {
         }
     }
     if (!best_pr || !(best_pr->distance <= 0.5 * radius_))
-        throw Error("a wall node at (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
-                    std::to_string(p.z()) + ") has no foot point on the tube's wall within half its radius: " +
+        throw Error("a wall node at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
+                    std::to_string(p.z) + ") has no foot point on the tube's wall within half its radius: " +
                     "the centre line does not follow the wall");
     cursor = {best, best_pr->uv};
-    return {to_eigen(best_pr->point), best_pr->distance};
+    return {best_pr->point, best_pr->distance};
 }
 
-V3 WallProjection::normal(const WallCursor& cursor) const {
+Vec3 WallProjection::normal(const WallCursor& cursor) const {
     if (cursor.face < 0 || static_cast<std::size_t>(cursor.face) >= faces_.size())
         throw Error("wall normal asked for before any foot point was found");
     const SurfaceMap& s = *faces_[static_cast<std::size_t>(cursor.face)];
-    const V3 n = to_eigen(s.normal(cursor.uv));
-    if (!(n.squaredNorm() > 0.5))
+    const Vec3 n = s.normal(cursor.uv);
+    if (!(norm2(n) > 0.5))
         throw Error("the wall of face " + std::to_string(s.face()) + " has no normal at a foot point");
     return n;
 }

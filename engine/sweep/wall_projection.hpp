@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
-#include "engine/sweep/vector_math.hpp"
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh::sweep {
 
@@ -17,7 +17,7 @@ struct WallCursor {
 };
 
 struct WallFoot {
-    V3 point;
+    Vec3 point;
     double distance = 0;
 };
 
@@ -33,17 +33,17 @@ public:
     // such a foot (a foot past a face's end lies on its untrimmed surface only, and global
     // projections are expensive); failing that, the nearest foot of all. Updates the cursor.
     // Throws tubemesh::Error when no face gives a foot point within half the radius.
-    WallFoot project(const V3& p, WallCursor& cursor) const;
+    WallFoot project(const Vec3& p, WallCursor& cursor) const;
 
     // Unit normal of the wall where `cursor` (set by project) points: the face's
     // SurfaceMap::normal there. Throws tubemesh::Error at a singular point of the face.
-    V3 normal(const WallCursor& cursor) const;
+    Vec3 normal(const WallCursor& cursor) const;
 
 private:
     struct Box {
-        V3 lo, hi;
+        Vec3 lo, hi;
     };
-    std::optional<Projection> try_face(int f, const V3& p, std::optional<Uv> hint) const;
+    std::optional<Projection> try_face(int f, const Vec3& p, std::optional<Uv> hint) const;
     bool acceptable(int f, const Projection& pr) const;
 
     std::vector<const SurfaceMap*> faces_;

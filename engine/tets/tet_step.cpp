@@ -2,14 +2,15 @@
 
 #include <tbb/global_control.h>
 
-#include <chrono>
 #include <vector>
+
+#include "engine/core/timing.hpp"
 
 namespace tubemesh::tets {
 
 TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region,
                         const TetStepOptions& options) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     TetStepStats stats;
     if (front.empty() || front.size() % 3 != 0) throw Error("tet step: the front is empty or not made of triangles");
     const unsigned threads =
@@ -94,7 +95,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         tets.region.push_back(region);
     }
     stats.tets = domain.tets.size();
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    stats.seconds = seconds_since(t0);
     return stats;
 }
 

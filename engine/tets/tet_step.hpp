@@ -15,11 +15,11 @@
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
-#include "engine/tets/boundary_recovery.hpp"
-#include "engine/tets/control_space.hpp"
-#include "engine/tets/odt_relaxation.hpp"
-#include "engine/tets/optimise.hpp"
-#include "engine/tets/refine.hpp"
+#include "engine/tets/recovery/boundary_recovery.hpp"
+#include "engine/tets/refinement/control_space.hpp"
+#include "engine/tets/refinement/odt_relaxation.hpp"
+#include "engine/tets/optimise/optimise.hpp"
+#include "engine/tets/refinement/refine.hpp"
 
 namespace tubemesh::tets {
 
@@ -27,23 +27,18 @@ struct TetStepOptions {
     // Far size S of the control space (the pipeline passes DiscreteGeometry::size). 0: the
     // largest local size of the front.
     double far_size = 0;
-    // Largest growth of the target size from one tet to the next (ControlSpaceOptions); 1.6.
-    // Measured on the paper's examples at the sizes of issue 9 (S = 0.6, 1.1, 40): 1.4 gives
-    // 156 k / 47 k / 10 k elements, 1.6 gives 114 k / 33 k / 7.9 k (the paper: 58.6 k / 9.4 k /
-    // 7.0 k), for a mean collapse 0.005-0.03 lower and a minimum no lower (>= 0.305 on all
-    // three; 1.7 drops paper-ex3's to 0.27). Most tets of a hybrid mesh sit in the transition
-    // from the rings' small quads to S, so the gradation sets the element count.
+    // Largest growth of the target size from one tet to the next (ControlSpaceOptions); 1.6:
+    // most tets of a hybrid mesh sit in the transition from the rings' small quads to S, so the
+    // gradation sets the element count (bench/results/tuning-notes.md has the trade-off).
     double gradation = 1.6;
     // Worker threads of every part; 0 = the current oneTBB limit (global_control), so the
     // pipeline's --threads applies.
     unsigned threads = 0;
     // Spatial parts of the parallel Delaunay passes (recovery's kernel run and refinement).
     // The mesh depends on the input and this count only, so with a fixed count it is the same
-    // for any thread count. Default 2, this machine's core count: it costs nothing at 2 threads
-    // and ~3 % at 1 (paper-ex1, 2026-12-02), and the quality bars checked at one thread count
-    // then hold at all: paper-ex2 at S 1.1 has minimum collapse 0.321 at 1, 2 and 3 threads,
-    // where one part per thread gives 0.289 at 1 and 3. 0 = one part per thread (more parallel
-    // work on machines with more cores; the mesh then depends on the thread count).
+    // for any thread count. Default 2: cheap at 1 and 2 threads, and the quality bars checked at
+    // one thread count then hold at all (bench/results/tuning-notes.md). 0 = one part per thread
+    // (more parallel work on machines with more cores; the mesh then depends on the thread count).
     unsigned partitions = 2;
     RecoveryOptions recovery;  // threads/partitions are overridden by the two fields above
     RefineOptions refine;      // likewise

@@ -11,8 +11,8 @@
 
 #include "engine/core/types.hpp"
 #include "geom/assembly/assembly_occt.hpp"
-#include "geom/cad_readers.hpp"
-#include "geom/solid_check.hpp"
+#include "geom/import/cad_readers.hpp"
+#include "geom/import/solid_check.hpp"
 
 namespace tubemesh::geom {
 

@@ -24,7 +24,7 @@
 #include "geom/builders/host_geometry.hpp"
 #include "geom/builders/pipe_sweep.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/solid_check.hpp"
+#include "geom/import/solid_check.hpp"
 
 namespace tubemesh::geom {
 
@@ -82,7 +82,7 @@ void check_crossings(const CentreLine& line, const HostSpec& host, double radius
 // with the pipe's whole footprint (an ellipse with semi-axis r / cos(angle)) clear of the edges:
 // then the removed volume is exactly pi r^2 times that length.
 std::optional<double> line_length_in_box(const Vec3& a, const Vec3& b, const Vec3& size, double r) {
-    const Vec3 d = normalized(b - a);
+    const Vec3 d = unit(b - a);
     const double o[3] = {a.x, a.y, a.z}, v[3] = {d.x, d.y, d.z}, s[3] = {size.x, size.y, size.z};
     double t0 = -1e300, t1 = 1e300;
     int axis0 = -1, axis1 = -1;

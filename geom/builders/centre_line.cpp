@@ -59,7 +59,7 @@ void sample_piece(const Handle(Geom_Curve)& piece, int count, std::vector<Sample
         gp_Pnt p;
         gp_Vec d1;
         piece->D1(u, p, d1);
-        out.push_back({to_vec3(p.XYZ()), normalized(to_vec3(d1.XYZ()))});
+        out.push_back({to_vec3(p.XYZ()), unit(to_vec3(d1.XYZ()))});
     }
 }
 
@@ -137,7 +137,7 @@ void detect_plane(const std::vector<Sample>& samples, double extent, CentreLine&
         if (norm(c) > norm(best)) best = c;
     }
     if (norm(best) < 1e-12 * extent * extent) return;  // collinear: the sweep needs no plane
-    const Vec3 normal = normalized(best);
+    const Vec3 normal = unit(best);
     for (const Sample& s : samples)
         if (std::abs(dot(s.p - p0, normal)) > 1e-9 * extent) return;
     line.planar = true;

@@ -6,7 +6,7 @@
 
 namespace tubemesh::geom {
 
-Vec3 normalized(const Vec3& a) { return (1.0 / norm(a)) * a; }
+Vec3 unit(const Vec3& a) { return (1.0 / norm(a)) * a; }
 
 double host_volume(const HostSpec& host) {
     if (host.kind == HostSpec::Kind::Box) return host.size.x * host.size.y * host.size.z;

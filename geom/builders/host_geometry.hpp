@@ -17,7 +17,8 @@ double signed_boundary_distance(const HostSpec& host, const Vec3& p);
 // edge gets the normal of the first face found; presets keep pipe ends away from edges.
 std::optional<Vec3> boundary_normal(const HostSpec& host, const Vec3& p, double tol);
 
-// Unit vector along a (a must not be zero).
-Vec3 normalized(const Vec3& a);
+// Unit vector along a, as (1 / |a|) · a (a must not be zero): the built blocks' coordinates
+// depend on this rounding, which differs from vec3_ops' normalized (a / |a|) in the last bit.
+Vec3 unit(const Vec3& a);
 
 }  // namespace tubemesh::geom

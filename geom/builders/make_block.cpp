@@ -6,7 +6,7 @@
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/step_write.hpp"
+#include "geom/import/step_write.hpp"
 
 namespace tubemesh::geom {
 

@@ -43,7 +43,7 @@ PathPieces polyline_pieces(const PipeSpec& pipe, int number) {
     // Tangent length at each interior corner: R tan(turn / 2).
     std::vector<double> cut(n, 0.0);
     for (std::size_t i = 1; i + 1 < n; ++i) {
-        const Vec3 u = normalized(p[i] - p[i - 1]), v = normalized(p[i + 1] - p[i]);
+        const Vec3 u = unit(p[i] - p[i - 1]), v = unit(p[i + 1] - p[i]);
         const double turn = std::acos(std::clamp(dot(u, v), -1.0, 1.0));
         if (turn < 1e-9) continue;  // collinear: no bend
         if (turn > kPi - 1e-3)
@@ -64,7 +64,7 @@ PathPieces polyline_pieces(const PipeSpec& pipe, int number) {
     PathPieces out;
     Vec3 at = p[0];
     for (std::size_t i = 1; i < n; ++i) {
-        const Vec3 u = normalized(p[i] - p[i - 1]);
+        const Vec3 u = unit(p[i] - p[i - 1]);
         const Vec3 corner_in = p[i] - cut[i] * u;
         if (norm(corner_in - at) > Precision::Confusion()) {
             out.curves.push_back(segment(at, corner_in));
@@ -72,7 +72,7 @@ PathPieces polyline_pieces(const PipeSpec& pipe, int number) {
         }
         at = corner_in;
         if (cut[i] > 0) {
-            const Vec3 v = normalized(p[i + 1] - p[i]);
+            const Vec3 v = unit(p[i + 1] - p[i]);
             const Vec3 corner_out = p[i] + cut[i] * v;
             GC_MakeArcOfCircle arc(to_pnt(corner_in), to_vec(u), to_pnt(corner_out));
             out.curves.push_back(arc.Value());
@@ -105,8 +105,8 @@ Handle(Geom_Curve) spline_through(const PipeSpec& pipe, const HostSpec& host, in
             tangents(i) = gp_Vec(1, 0, 0);
             flags->SetValue(i, Standard_False);
         }
-        if (t0) tangents(1) = to_vec(normalized(*t0)), flags->SetValue(1, Standard_True);
-        if (t1) tangents(n) = to_vec(normalized(*t1)), flags->SetValue(n, Standard_True);
+        if (t0) tangents(1) = to_vec(unit(*t0)), flags->SetValue(1, Standard_True);
+        if (t1) tangents(n) = to_vec(unit(*t1)), flags->SetValue(n, Standard_True);
         interpolate.Load(tangents, flags, Standard_True);
     }
     interpolate.Perform();

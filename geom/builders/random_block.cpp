@@ -44,10 +44,10 @@ Vec3 point_on(const Face& f, const Vec3& size, double margin, Random& rng) {
 // `dir` turned by a random angle up to `max_angle` about a random axis perpendicular to it.
 Vec3 tilted(const Vec3& dir, double max_angle, Random& rng) {
     const Vec3 helper = std::abs(dir.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    const Vec3 u = normalized(cross(dir, helper)), v = cross(dir, u);
+    const Vec3 u = unit(cross(dir, helper)), v = cross(dir, u);
     const double phi = rng.uniform(0, 2 * kPi), angle = rng.uniform(0, max_angle);
     const Vec3 side = std::cos(phi) * u + std::sin(phi) * v;
-    return normalized(std::cos(angle) * dir + std::sin(angle) * side);
+    return unit(std::cos(angle) * dir + std::sin(angle) * side);
 }
 
 struct Candidate {

@@ -22,7 +22,7 @@
 
 #include "geom/builders/block_builder.hpp"
 #include "geom/model_occt.hpp"
-#include "geom/step_write_occt.hpp"
+#include "geom/import/step_write_occt.hpp"
 #include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"

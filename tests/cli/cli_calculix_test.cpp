@@ -18,7 +18,7 @@
 #include <sstream>
 #include <string>
 
-#include "tests/mesh_io_samples.hpp"
+#include "tests/support/mesh_io_samples.hpp"
 #include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "geom/step_write_occt.hpp"
+#include "geom/import/step_write_occt.hpp"
 #include "tests/support/cli_command.hpp"
 #include "tests/support/process.hpp"
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "engine/io/mesh_io.hpp"
-#include "tests/mesh_io_samples.hpp"
+#include "tests/support/mesh_io_samples.hpp"
 #include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"

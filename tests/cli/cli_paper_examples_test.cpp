@@ -1,4 +1,4 @@
-// Issue 9's acceptance on the paper's three examples (our builders' versions), end to end
+// Acceptance of the paper's three examples (our builders' versions), end to end
 // through `tubemesh mesh` with --size 0.6, 1.1 and 40 and every other option at its default:
 // the run succeeds (so our check passed before anything was written), the Table-1 report is
 // printed, Gmsh reopens the .msh with the same counts and groups, the hex and pyramid bars
@@ -6,10 +6,9 @@
 //
 // One source, two executables: test_cli_paper_examples (CI) runs everything that holds today,
 // the tet collapse minimum of 0.30 included; test_cli_paper_examples_gaps (TUBEMESH_PAPER_GAPS,
-// labels heavy and known_gap) what does not yet: the mean tet collapse of 0.80 (issue 8) on all
+// labels heavy and known_gap) what does not yet: the mean tet collapse of 0.80 (the tet step's bar) on all
 // three, and the element count of paper-ex2 (33 k against the paper's 9,412: the paper's rings
-// are far coarser than issue 4's defaults of 8 nodes around and an axial aspect of 1.5 allow;
-// see the closing note of 2026-12-02).
+// are far coarser than the rings' defaults of 8 nodes around and an axial aspect of 1.5 allow).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -101,7 +100,7 @@ TEST_P(PaperExample, MeshesEndToEndIsReportedReopenedAndMeetsTheBars) {
     EXPECT_EQ(seen["elements"].get<testing::Counts>(), testing::gmsh_counts(r.mesh));
     EXPECT_EQ(seen["physical"], testing::physical_groups(r.mesh));
 
-    // Issue 4's, 6's and 8's bars (issue 8's mean collapse of 0.80, not met yet: the _gaps build).
+    // The ring, pyramid and tet bars (the tet mean collapse of 0.80, not met yet: the _gaps build).
     const json& quality = r.report["quality"];
     ASSERT_TRUE(quality.is_object());
     EXPECT_GE(quality["hex_scaled_jacobian"]["min"].get<double>(), 0.5);

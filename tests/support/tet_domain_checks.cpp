@@ -11,7 +11,7 @@
 #include "engine/delaunay/tet_store.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/predicates/predicates.hpp"
-#include "engine/tets/boundary_recovery.hpp"
+#include "engine/tets/recovery/boundary_recovery.hpp"
 
 namespace tubemesh::testing {
 namespace {

@@ -11,12 +11,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "geom/element_budget.hpp"
-#include "geom/import.hpp"
+#include "geom/sizing/element_budget.hpp"
+#include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
-#include "geom/sizing.hpp"
+#include "geom/sizing/sizing.hpp"
 #include "geom/surface_map_occt.hpp"
-#include "geom/tubes.hpp"
+#include "geom/tubes/tubes.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/option_checks.hpp"
 

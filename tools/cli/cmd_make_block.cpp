@@ -13,7 +13,7 @@
 #include "geom/builders/make_block.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/step_write.hpp"
+#include "geom/import/step_write.hpp"
 #include "tools/cli/commands.hpp"
 
 namespace tubemesh::cli {

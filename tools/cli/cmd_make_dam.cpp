@@ -16,7 +16,7 @@
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/dam.hpp"
 #include "geom/builders/spec_json.hpp"
-#include "geom/step_write.hpp"
+#include "geom/import/step_write.hpp"
 #include "tools/cli/commands.hpp"
 
 namespace tubemesh::cli {

@@ -21,7 +21,7 @@
 
 #include "engine/io/mesh_io.hpp"
 #include "geom/assembly/mesh_assembly.hpp"
-#include "geom/element_budget.hpp"
+#include "geom/sizing/element_budget.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/memory_limit.hpp"

@@ -18,13 +18,13 @@ ProgressCallback ProgressLine::callback() {
 
 void ProgressLine::operator()(const ProgressEvent& e) {
     if (mode_ == Mode::Quiet) return;
-    const auto now = std::chrono::steady_clock::now();
+    const auto now = Clock::now();
     if (e.phase != phase_) {
         close();
         phase_ = std::string(e.phase);
         start_ = now;
     }
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double elapsed = seconds_since(start_);
     const bool done = e.total > 0 && e.done >= e.total;
     if (mode_ == Mode::Plain) {
         if (done) fmt::print("progress: {} {}/{} in {:.3f} s\n", e.phase, e.done, e.total, elapsed);

@@ -5,9 +5,10 @@
 //  * Not a terminal: one plain line on stdout per finished phase ("progress: sweep 40/40 in
 //    0.812 s"), so logs stay readable and stderr holds only warnings and errors.
 //  * Quiet: nothing.
-#include <chrono>
+
 #include <string>
 
+#include "engine/core/timing.hpp"
 #include "engine/pipeline/progress.hpp"
 
 namespace tubemesh::cli {
@@ -26,7 +27,7 @@ public:
 private:
     Mode mode_;
     std::string phase_;
-    std::chrono::steady_clock::time_point start_;
+    Clock::time_point start_;
     bool open_ = false;
 };
 

@@ -1,0 +1,350 @@
+#include "engine/tets/optimise/smoothing.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "engine/mesh/vec3_ops.hpp"
+#include "engine/predicates/predicates_inline.hpp"
+#include "engine/quality/quality.hpp"
+#include "engine/tets/point_colouring.hpp"
+#include "engine/tets/tet_neighbourhood.hpp"
+
+namespace tubemesh::tets {
+
+namespace {
+
+// The direction in which the sum of the star's collapses rises fastest when p moves (zero when
+// there is none). A tet's collapse is 3V / A^(3/2) over the regular tet's, A its largest face
+// area, so d ln q = d(3V) / 3V - 1.5 dA / A; only the faces through p have areas that move.
+// `collapse[k]`: the collapse of star[k] as it is.
+Vec3 ascent_direction(const StarCorners& star, std::span<const double> collapse) {
+    Vec3 g{0, 0, 0};
+    for (std::size_t k_star = 0; k_star < star.corners.size(); ++k_star) {
+        const int lp = star.at[k_star];
+        const std::array<Vec3, 4>& c = star.corners[k_star];
+        const double q = collapse[k_star];
+        if (!(q > 0)) continue;
+        const auto& f = kTetFaceToward[lp];
+        const Vec3 opposite = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);  // toward p
+        const double three_volume = 0.5 * dot(c[lp] - c[f[0]], opposite);
+        // The largest face and its area.
+        int largest = 0;
+        double area2 = -1;
+        for (int k = 0; k < 4; ++k) {
+            const auto& h = kTetFaceToward[k];
+            const double a2 = norm2(cross(c[h[1]] - c[h[0]], c[h[2]] - c[h[0]]));
+            if (a2 > area2) {
+                area2 = a2;
+                largest = k;
+            }
+        }
+        Vec3 d_ln = (0.5 / three_volume) * opposite;
+        if (largest != lp) {
+            // p is a corner (c[lp], u, w) of the largest face: dA/dp = (u - w) x n / 2, n the
+            // face's unit normal.
+            const auto& h = kTetFaceToward[largest];
+            int u = -1, w = -1;
+            for (int k = 0; k < 3; ++k)
+                if (h[k] != lp) (u < 0 ? u : w) = h[k];
+            const Vec3 n = cross(c[u] - c[lp], c[w] - c[lp]);
+            const double len = norm(n);
+            if (len > 0) {
+                const double area = 0.5 * len;
+                d_ln = d_ln - (1.5 / area) * (0.5 / len) * cross(c[u] - c[w], n);
+            }
+        }
+        g = g + q * d_ln;
+    }
+    return g;
+}
+
+// Two kinds of move. A star whose worst tet is below `floor` first tries moves that raise that
+// tet (towards the neighbours' centroid, the ODT position or the worst tet's regular apex). A
+// star at or above the floor, or one no such move helps, tries moves that raise the star's sum
+// of collapses (along its gradient, towards the ODT position or the centroid) and keep its
+// worst tet at or above min(its value, floor). The sum is what the mean is made of: on the
+// paper's examples letting fair stars trade their worst tet for it (they used to try the
+// worst-tet moves first, and nearly always found one) raised the mean collapse by 0.007-0.015.
+// Points whose worst tet is below this get finer steps and extra sweeps (polish): the few
+// worst tets of the mesh decide its minimum, the bulk only the mean.
+constexpr double kPolishBelow = 0.35;
+
+// Per-thread scratch of try_move: the star (old worst tet first) and its tets' collapses.
+struct StarScratch {
+    std::vector<index_t> star;
+    std::vector<double> collapse;
+    StarCorners corners;
+};
+
+// `tet_collapse_now`: the collapse of every tet, updated for p's star when p moves.
+bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, double threshold, double min_gain,
+              double floor, StarScratch& scratch, double& worst_before, bool polish,
+              std::vector<double>& tet_collapse_now) {
+    StarQuality now;
+    std::size_t worst_at = 0;
+    auto& star = scratch.star;
+    auto& collapse = scratch.collapse;
+    collapse.resize(incident.size());
+    for (std::size_t k = 0; k < incident.size(); ++k) {
+        const double q = tet_collapse_now[incident[k]];
+        collapse[k] = q;
+        now.sum += q;
+        if (q < now.worst) {
+            now.worst = q;
+            worst_at = k;
+        }
+    }
+    worst_before = now.worst;
+    if (!(now.worst < threshold)) return false;
+    // The old worst tet first: the trial that does not beat it gives up at once. Only the
+    // order of summation changes (a sum never decides more than min_gain apart).
+    star.assign(incident.begin(), incident.end());
+    std::swap(star[0], star[worst_at]);
+    std::swap(collapse[0], collapse[worst_at]);
+    const index_t worst_tet = star[0];
+    StarCorners& corners = scratch.corners;
+    gather_star_corners(dom, p, star, corners);
+
+    const Vec3 here = point_vec(dom, p);
+    const Vec3 centroid = star_centroid(corners);
+    double reach = 0;
+    for (std::size_t k = 0; k < star.size(); ++k)
+        for (int i = 0; i < 4; ++i)
+            if (i != corners.at[k]) reach += norm(corners.corners[k][i] - here);
+    reach /= 3.0 * static_cast<double>(star.size());
+    const Vec3 odt = odt_target(corners, centroid);
+    // In a polish sweep a poor star also aims at the regular apices of its other poor tets (up
+    // to 4): the worst one's apex alone often only trades it for the next.
+    std::array<Vec3, 7> target_store{centroid, odt, regular_apex(dom, worst_tet, p)};
+    std::size_t target_count = 3;
+    if (polish && now.worst < kPolishBelow)
+        for (std::size_t k = 1; k < star.size() && target_count < target_store.size(); ++k) {
+            if (collapse[k] < kPolishBelow)
+                target_store[target_count++] = regular_apex(dom, star[k], p);
+        }
+    const std::span<const Vec3> targets(target_store.data(), target_count);
+    // Steps of 1/8 and 1/16 rarely win for a fair star and cost more trials; a poor star gets them.
+    constexpr double kStepsAll[] = {1.0, 0.5, 0.25, 0.125, 0.0625};
+    const std::span<const double> kSteps(kStepsAll, now.worst < kPolishBelow ? 5 : 3);
+
+    double best = now.worst + min_gain;
+    Vec3 best_x = here;
+    bool improved = false;
+    if (now.worst < floor)
+        for (const Vec3& target : targets)
+            for (double step : kSteps) {
+                const Vec3 x = here + step * (target - here);
+                const double q = star_quality(corners, x, best).worst;
+                if (q > best) {
+                    best = q;
+                    best_x = x;
+                    improved = true;
+                }
+            }
+    if (!improved) {
+        double best_sum = now.sum + min_gain * static_cast<double>(star.size());
+        const double keep_above = std::min(now.worst, floor);
+        const double give_up = std::nextafter(keep_above, -1.0);
+        // Mean-raising moves of a fair star: the two longer steps (the short one seldom wins).
+        const std::span<const double> sum_steps = now.worst < kPolishBelow ? kSteps : kSteps.first(2);
+        // Along the ascent of the sum: the target lies 0.4 of the star's mean edge from p, and
+        // the four trials go 1/2 to 1/16 of the way there (0.2 down to 0.025 of the edge): the
+        // short steps win most often (bench/results/tuning-notes.md).
+        constexpr double kUphillSteps[] = {0.5, 0.25, 0.125, 0.0625};
+        const Vec3 g = ascent_direction(corners, collapse);
+        const double glen = norm(g);
+        const Vec3 uphill = glen > 0 ? here + (0.4 * reach / glen) * g : here;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 target = k == 0 ? uphill : k == 1 ? odt : centroid;
+            for (double step : k == 0 ? std::span<const double>(kUphillSteps) : sum_steps) {
+                const Vec3 x = here + step * (target - here);
+                const StarQuality q = star_quality(corners, x, give_up);
+                if (q.worst >= keep_above && q.sum > best_sum) {
+                    best_sum = q.sum;
+                    best_x = x;
+                    improved = true;
+                }
+            }
+        }
+    }
+    if (!improved || !none_inverted(dom, p, star, best_x)) return false;
+    double* c = dom.xyz.data() + std::size_t{3} * p;
+    c[0] = best_x.x;
+    c[1] = best_x.y;
+    c[2] = best_x.z;
+    // No other point of p's colour has a vertex in p's star: these slots are p's alone.
+    for (index_t t : incident) {
+        const index_t* v = dom.tets.vertex(t);
+        tet_collapse_now[t] = collapse_of(dom, v[0], v[1], v[2], v[3]);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool none_inverted(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3& x) {
+    const double moved[3] = {x.x, x.y, x.z};
+    for (index_t t : star) {
+        const index_t* v = dom.tets.vertex(t);
+        std::array<const double*, 4> c;
+        for (int i = 0; i < 4; ++i) c[i] = v[i] == p ? moved : dom.point(v[i]);
+        if (predicates::orient3d_inline(c[0], c[1], c[2], c[3]) <= 0) return false;
+    }
+    return true;
+}
+
+// Where p would make tet t regular over its opposite face: above the face's centroid, at the
+// regular tet's height for the face's mean edge length, on p's side.
+Vec3 regular_apex(const TetDomain& dom, index_t t, index_t p) {
+    const index_t* v = dom.tets.vertex(t);
+    const int lp = local_index(dom, t, p);
+    const auto& f = kTetFaceToward[lp];
+    const Vec3 a = point_vec(dom, v[f[0]]), b = point_vec(dom, v[f[1]]), c = point_vec(dom, v[f[2]]);
+    const Vec3 normal = cross(b - a, c - a);  // toward p: (a, b, c, p) is positive
+    const double len = norm(normal);
+    const Vec3 centroid = (1.0 / 3.0) * (a + b + c);
+    if (!(len > 0)) return centroid;
+    const double edge = (norm(b - a) + norm(c - b) + norm(a - c)) / 3.0;
+    return centroid + (std::sqrt(2.0 / 3.0) * edge / len) * normal;
+}
+
+SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
+                              const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
+                              std::vector<double>& collapses) {
+    SmoothingCounts counts;
+    const Incidence inc = build_incidence(dom);
+    const index_t points = dom.point_count();
+    std::vector<index_t> todo;
+    for (index_t p = dom.front_points; p < points; ++p)
+        if (!inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
+    std::vector<std::uint32_t> colour(points, kNoIndex);
+    std::vector<std::uint8_t> moved, again(points, 0);
+    std::vector<index_t> moved_points;
+    std::vector<double> worst;
+    tbb::enumerable_thread_specific<StarScratch> star_scratch;
+    // `sweeps` sweeps, then up to kPolishSweeps over the points near a moved poor star.
+    constexpr int kPolishSweeps = 3;
+    const int total_sweeps = sweeps > 0 ? sweeps + kPolishSweeps : 0;
+    for (int sweep = 0; sweep < total_sweeps && !todo.empty(); ++sweep) {
+        const bool polish = sweep >= sweeps;
+        const double below = polish ? std::min(threshold, kPolishBelow) : threshold;
+        const auto classes = colour_points(dom, inc, todo, colour);
+        counts.colours = std::max<std::uint64_t>(counts.colours, classes.size());
+        moved_points.clear();
+        for (const auto& pts : classes) {
+            moved.assign(pts.size(), 0);
+            worst.assign(pts.size(), 0.0);
+            const auto move_range = [&](const tbb::blocked_range<std::size_t>& r) {
+                auto& scratch = star_scratch.local();
+                for (std::size_t i = r.begin(); i != r.end(); ++i)
+                    moved[i] = try_move(dom, pts[i], inc.of(pts[i]), below, min_gain, floor, scratch, worst[i], polish,
+                                        collapses);
+            };
+            // A small colour (most of the polish sweeps' and focused passes') runs on this
+            // thread: a parallel job for a few points costs more than it saves, much more on
+            // an oversubscribed machine, where every job waits for its slowest worker.
+            constexpr std::size_t kGrain = 16;
+            const tbb::blocked_range<std::size_t> all(0, pts.size(), kGrain);
+            if (pts.size() < 2 * kGrain)
+                move_range(all);
+            else
+                tbb::parallel_for(all, move_range);
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                if (!moved[i]) continue;
+                moved_points.push_back(pts[i]);
+                changed[pts[i]] = 1;
+                // Later sweeps: the free points of the stars of the points that moved (only
+                // of poor stars once the polish sweeps come).
+                if (sweep + 1 < sweeps || worst[i] < kPolishBelow)
+                    for (index_t t : inc.of(pts[i]))
+                        for (index_t k = 0; k < 4; ++k) again[dom.tets.vertex(t)[k]] = 1;
+            }
+        }
+        counts.moves += moved_points.size();
+        todo.clear();
+        for (index_t p = dom.front_points; p < points; ++p)
+            if (again[p]) {
+                todo.push_back(p);
+                again[p] = 0;
+            }
+    }
+    return counts;
+}
+
+void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out) {
+    out.corners.resize(star.size());
+    out.at.resize(star.size());
+    out.opposite.resize(star.size());
+    for (std::size_t k = 0; k < star.size(); ++k) {
+        const index_t* v = dom.tets.vertex(star[k]);
+        for (int i = 0; i < 4; ++i) {
+            out.corners[k][i] = point_vec(dom, v[i]);
+            if (v[i] == p) out.at[k] = static_cast<std::uint8_t>(i);
+        }
+        const auto& f = kTetFaceToward[out.at[k]];
+        StarCorners::Opposite& o = out.opposite[k];
+        o.a = out.corners[k][f[0]];
+        o.b = out.corners[k][f[1]];
+        o.c = out.corners[k][f[2]];
+        o.n = cross(o.b - o.a, o.c - o.a);
+        o.area4 = norm2(o.n);
+    }
+}
+
+Vec3 star_centroid(const StarCorners& star) {
+    Vec3 centroid{0, 0, 0};
+    for (std::size_t k = 0; k < star.corners.size(); ++k)
+        for (int i = 0; i < 4; ++i)
+            if (i != star.at[k]) centroid = centroid + star.corners[k][i];
+    return (1.0 / (3.0 * static_cast<double>(star.corners.size()))) * centroid;
+}
+
+Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const double> weight) {
+    Vec3 sum{0, 0, 0};
+    double total = 0;
+    for (std::size_t k = 0; k < star.corners.size(); ++k) {
+        const auto& corner = star.corners[k];
+        const Vec3 a = corner[0];
+        const Vec3 b = corner[1] - a, c = corner[2] - a, d = corner[3] - a;
+        const double det = dot(b, cross(c, d));
+        if (!(det > 0)) continue;
+        const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
+        const double w = weight.empty() ? det : det * weight[k];
+        sum = sum + w * centre;
+        total += w;
+    }
+    return total > 0 ? (1.0 / total) * sum : fallback;
+}
+
+namespace {
+
+// tet_collapse of (a, b, c, x) from the fixed face's data: the same measure, rounded a little
+// differently (3V from n instead of from the edges at a corner).
+double collapse_with(const StarCorners::Opposite& o, const Vec3& x) {
+    const Vec3 xa = o.a - x, xb = o.b - x, xc = o.c - x;
+    return tet_collapse_from(-0.5 * dot(xa, o.n),
+                             {o.area4, norm2(cross(xa, xb)), norm2(cross(xb, xc)), norm2(cross(xc, xa))});
+}
+
+}  // namespace
+
+StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up) {
+    StarQuality s;
+    for (std::size_t k = 0; k < star.corners.size(); ++k) {
+        const double q = collapse_with(star.opposite[k], x);
+        s.worst = std::min(s.worst, q);
+        s.sum += q;
+        if (q <= give_up) break;
+    }
+    return s;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,392 @@
+#include "engine/tets/refinement/interior_points.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <optional>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
+#include "engine/mesh/point_index.hpp"
+#include "engine/mesh/topology.hpp"
+#include "engine/mesh/vec3_ops.hpp"
+#include "engine/predicates/predicates_inline.hpp"
+#include "engine/tets/refinement/control_space.hpp"
+
+namespace tubemesh::tets {
+namespace pred = tubemesh::predicates;
+using delaunay::kFreeSlot;
+using delaunay::kNoAdjacent;
+
+namespace {
+
+Vec3 at(const MeshView& m, index_t v) { return {m.xyz[3 * std::size_t{v}], m.xyz[3 * std::size_t{v} + 1], m.xyz[3 * std::size_t{v} + 2]}; }
+const double* ptr(const MeshView& m, index_t v) { return m.xyz.data() + 3 * std::size_t{v}; }
+
+// Visibility walk from `tet` to p. kNoIndex when it leaves through the front (p outside, or
+// behind a concave part of the front: either way no place for an ideal point of this tet)
+// or circles (possible off Delaunay meshes). The face order comes from a hash, not a shared
+// generator, so the walk is the same whatever thread runs it.
+index_t walk_to(const MeshView& m, index_t tet, const double* p, std::uint32_t seed) {
+    unsigned from = 4;
+    for (int steps = 0; steps < 4096; ++steps) {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        const index_t* v = m.tets.vertex(tet);
+        unsigned exit = 4;
+        for (unsigned k = 0; k < 4; ++k) {
+            const unsigned f = (seed + k) & 3;
+            if (f == from) continue;
+            const double* q[4] = {ptr(m, v[0]), ptr(m, v[1]), ptr(m, v[2]), ptr(m, v[3])};
+            q[f] = p;
+            if (pred::orient3d_inline(q[0], q[1], q[2], q[3]) < 0) {
+                exit = f;
+                break;
+            }
+        }
+        if (exit == 4) return tet;
+        const index_t code = m.tets.neighbour(4 * tet + exit);
+        if (code == kNoAdjacent) return kNoIndex;
+        tet = code >> 2;
+        from = code & 3;
+    }
+    return kNoIndex;
+}
+
+// The node of the body-centred cubic lattice with cube edge a (a corner at the origin) nearest p.
+Vec3 nearest_bcc_node(const Vec3& p, double a) {
+    const Vec3 corner{a * std::round(p.x / a), a * std::round(p.y / a), a * std::round(p.z / a)};
+    const Vec3 centre{a * (std::floor(p.x / a) + 0.5), a * (std::floor(p.y / a) + 0.5), a * (std::floor(p.z / a) + 0.5)};
+    return distance2(p, corner) <= distance2(p, centre) ? corner : centre;
+}
+
+}  // namespace
+
+std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace& space) {
+    std::vector<double> h(xyz.size() / 3);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, h.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) h[i] = space.size(xyz.data() + 3 * i);
+    });
+    return h;
+}
+
+bool tet_too_big(const MeshView& m, index_t tet, double tolerance) {
+    const index_t* v = m.tets.vertex(tet);
+    const Vec3 p[4] = {at(m, v[0]), at(m, v[1]), at(m, v[2]), at(m, v[3])};
+    double sum = 0;
+    for (int e = 0; e < 6; ++e) sum += norm(p[kTetTopology.edge[e].a] - p[kTetTopology.edge[e].b]);
+    const double h = 0.25 * (m.h[v[0]] + m.h[v[1]] + m.h[v[2]] + m.h[v[3]]);
+    return sum / 6.0 > tolerance * h;
+}
+
+std::vector<index_t> active_faces(const MeshView& m, double tolerance) {
+    TooBigMemo memo;
+    return active_faces(m, tolerance, memo);
+}
+
+std::vector<index_t> active_faces(const MeshView& m, double tolerance, TooBigMemo& memo) {
+    const index_t n = m.tets.size();
+    if (memo.ids.size() < n) {
+        memo.ids.resize(n, {kFreeSlot, kFreeSlot, kFreeSlot, kFreeSlot});
+        memo.big.resize(n, 0);
+    }
+    std::atomic<std::uint64_t> tests{0};
+    tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
+        std::uint64_t made = 0;
+        for (index_t t = r.begin(); t < r.end(); ++t) {
+            const index_t* v = m.tets.vertex(t);
+            std::array<index_t, 4>& known = memo.ids[t];
+            if (v[0] == kFreeSlot) {
+                known[0] = kFreeSlot;
+                memo.big[t] = 0;
+            } else if (!std::equal(v, v + 4, known.begin())) {
+                memo.big[t] = tet_too_big(m, t, tolerance) ? 1 : 0;
+                std::copy_n(v, 4, known.begin());
+                ++made;
+            }
+        }
+        tests.fetch_add(made, std::memory_order_relaxed);
+    });
+    memo.tests += tests.load();
+    const std::vector<std::uint8_t>& big = memo.big;
+    // Each fixed chunk of slots lists its faces; joined in chunk order they stay increasing.
+    constexpr index_t kChunk = 16384;
+    const index_t chunks = (n + kChunk - 1) / kChunk;
+    std::vector<std::vector<index_t>> listed(chunks);
+    tbb::parallel_for(index_t{0}, chunks, [&](index_t c) {
+        for (index_t t = c * kChunk; t < std::min(n, (c + 1) * kChunk); ++t) {
+            if (!big[t]) continue;
+            for (unsigned f = 0; f < 4; ++f) {
+                const index_t code = m.tets.neighbour(4 * t + f);
+                if (code == kNoAdjacent || !big[code >> 2]) listed[c].push_back(4 * t + f);
+            }
+        }
+    });
+    std::vector<index_t> faces;
+    for (const auto& l : listed) faces.insert(faces.end(), l.begin(), l.end());
+    return faces;
+}
+
+std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space,
+                                      const FarLattice& lattice) {
+    ProposalMemo memo;
+    return propose_points(m, faces, space, memo, lattice);
+}
+
+std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space,
+                                      ProposalMemo& memo, const FarLattice& lattice) {
+    constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<ProposalMemo::Entry>& before = memo.entries;
+    std::vector<ProposalMemo::Entry> now(faces.size());
+    std::vector<Candidate> out(faces.size());
+    std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::uint64_t reused = 0;
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            const index_t t = faces[i] >> 2, f = faces[i] & 3;
+            const index_t* v = m.tets.vertex(t);
+            ProposalMemo::Entry& e = now[i];
+            e.face = faces[i];
+            std::copy_n(v, 4, e.ids.begin());
+            const auto hit = std::lower_bound(before.begin(), before.end(), faces[i],
+                                              [](const ProposalMemo::Entry& x, index_t code) { return x.face < code; });
+            bool far_face = false;  // which way to ask the control space (not what it answers)
+            if (hit != before.end() && hit->face == faces[i] && hit->ids == e.ids) {
+                e = *hit;
+                ++reused;
+            } else {
+                const auto& node = kTetTopology.face[f].node;
+                const Vec3 a = at(m, v[node[0]]), b = at(m, v[node[1]]), c = at(m, v[node[2]]);
+                const Vec3 g = (1.0 / 3.0) * (a + b + c);
+                const Vec3 outward = cross(b - a, c - a);  // out of t
+                const double len = norm(outward);
+                if (!(len > 0)) continue;
+                const double rho2 = (distance2(g, a) + distance2(g, b) + distance2(g, c)) / 3.0;
+                // Apex at distance h from the face's vertices when the face allows it.
+                const auto apex = [&](double h) {
+                    return g - (std::sqrt(std::max(h * h - rho2, 0.25 * h * h)) / len) * outward;
+                };
+                // h where the new tet will be (halfway to the apex), not at the face: in a graded
+                // field the face's own size is too small for the tet it starts (a higher mean
+                // collapse in fewer rounds: bench/results/tuning-notes.md).
+                const double h_face = (m.h[v[node[0]]] + m.h[v[node[1]]] + m.h[v[node[2]]]) / 3.0;
+                const Vec3 first = apex(h_face);
+                const Vec3 mid = 0.5 * (g + first);
+                const double mq[3] = {mid.x, mid.y, mid.z};
+                // A face whose points are at S most likely proposes where h is S too: ask the
+                // cheaper way first (the same value either way).
+                far_face = h_face >= space.far_size();
+                const double h_mid = far_face ? space.size_if_far(mq) : space.size(mq);
+                Vec3 p = apex(h_mid);
+                e.h = kUnknown;
+                // Snap only where h is the far size (the lattice's spacing is right there) and the
+                // front is far enough for advancing-front layers to fill the seam between them.
+                // The test at the node needs one more nearest-node query: only ideal points
+                // already at the far size ask it (on the serpentine lift, none of whose tets
+                // reach it, asking every one cost 10-20 % of the refinement).
+                const double far = space.far_size();
+                if (lattice.spacing > 0 && h_mid >= far) {
+                    const Vec3 node = nearest_bcc_node(p, lattice.spacing * far);
+                    const double nq[3] = {node.x, node.y, node.z};
+                    if (space.far_and_clear(nq, lattice.clearance * far)) {
+                        p = node;
+                        e.h = far;
+                    }
+                }
+                e.p[0] = p.x;
+                e.p[1] = p.y;
+                e.p[2] = p.z;
+            }
+            known[i] = 1;
+            const index_t holder = walk_to(m, t, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
+            if (holder == kNoIndex) continue;
+            // h at the point only for points that may be inserted (most walks succeed).
+            if (std::isnan(e.h)) e.h = far_face ? space.size_if_far(e.p) : space.size(e.p);
+            out[i] = {{e.p[0], e.p[1], e.p[2]}, e.h, holder};
+            ok[i] = 1;
+        }
+        memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
+    });
+    // Faces come in increasing order, so the entries stay sorted for the next round's search.
+    std::vector<ProposalMemo::Entry> entries;
+    entries.reserve(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        if (known[i]) entries.push_back(now[i]);
+    memo.entries.swap(entries);
+    std::vector<Candidate> kept;
+    kept.reserve(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        if (ok[i]) kept.push_back(out[i]);
+    return kept;
+}
+
+namespace {
+
+// A set of points (GrowingPoints' kept ones), in two k-d trees split at the median of the
+// bounding box's longest axis: the two halves build at the same time (nanoflann builds
+// serially, and one tree over all of them was the longest serial step of a round, serpentine
+// lift: 0.3 s over the rounds). A query whose ball reaches across the plane asks both, so
+// `empty_within` answers exactly as one tree would.
+class SplitPoints {
+public:
+    explicit SplitPoints(std::span<const double> xyz) : size_(xyz.size() / 3) {
+        std::vector<index_t> order(size_);
+        std::iota(order.begin(), order.end(), index_t{0});
+        double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
+        for (std::size_t i = 0; i < size_; ++i)
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], xyz[3 * i + a]);
+                hi[a] = std::max(hi[a], xyz[3 * i + a]);
+            }
+        for (int a = 1; a < 3; ++a)
+            if (hi[a] - lo[a] > hi[axis_] - lo[axis_]) axis_ = a;
+        const std::size_t half = size_ / 2;
+        const auto coordinate = [&](index_t i) { return xyz[3 * std::size_t{i} + axis_]; };
+        if (size_ > 0) {
+            std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(half), order.end(),
+                             [&](index_t i, index_t j) { return coordinate(i) < coordinate(j); });
+            split_ = coordinate(order[half]);  // the low half is <= split_, the high half >= split_
+        }
+        for (int side = 0; side < 2; ++side) {
+            Half& h = half_[side];
+            const std::size_t from = side == 0 ? 0 : half, to = side == 0 ? half : size_;
+            for (std::size_t k = from; k < to; ++k) {
+                const std::size_t i = order[k];
+                h.x.push_back(xyz[3 * i]);
+                h.y.push_back(xyz[3 * i + 1]);
+                h.z.push_back(xyz[3 * i + 2]);
+            }
+        }
+    }
+    // The trees, one task each (beside whatever else the caller runs at the same time).
+    void build_low() { half_[0].build(); }
+    void build_high() { half_[1].build(); }
+
+    // No point strictly closer than `radius` to q (PointIndex::within's test).
+    bool empty_within(const Vec3& q, double radius) const {
+        const double x = axis_ == 0 ? q.x : axis_ == 1 ? q.y : q.z;
+        const int side = x < split_ ? 0 : 1;
+        if (!half_[side].empty_within(q, radius)) return false;
+        // A point of the other half is at least |x - split| away along the axis.
+        const double gap = side == 0 ? split_ - x : x - split_;
+        return gap >= radius || half_[1 - side].empty_within(q, radius);
+    }
+
+private:
+    static constexpr double kInf = std::numeric_limits<double>::infinity();
+    struct Half {
+        std::vector<double> x, y, z;
+        std::optional<PointIndex> tree;
+        void build() {
+            if (!x.empty()) tree.emplace(x, y, z);
+        }
+        bool empty_within(const Vec3& q, double radius) const { return !tree || !tree->any_within(q, radius); }
+    };
+    std::size_t size_;
+    int axis_ = 0;
+    double split_ = 0;
+    Half half_[2];
+};
+
+}  // namespace
+
+struct GrowingPoints::Impl {
+    std::vector<double> all;           // every point, 3 coordinates each
+    std::size_t indexed = 0;           // points [0, indexed) are in `kept`
+    std::unique_ptr<SplitPoints> kept;
+    std::vector<double> x, y, z;       // points [indexed, in_recent)
+    std::size_t in_recent = 0;
+    std::optional<PointIndex> recent;
+
+    // Builds the trees the points appended since the last call need, `beside` at the same time.
+    template <class F>
+    void prepare(F&& beside) {
+        const std::size_t n = all.size() / 3;
+        if (!kept || 4 * (n - indexed) > indexed) {
+            kept = std::make_unique<SplitPoints>(all);
+            indexed = in_recent = n;
+            recent.reset();
+            x.clear();
+            y.clear();
+            z.clear();
+            tbb::parallel_invoke([&] { kept->build_low(); }, [&] { kept->build_high(); }, beside);
+            return;
+        }
+        if (in_recent == n) {
+            beside();
+            return;
+        }
+        recent.reset();  // it refers to x, y, z, which grow now
+        for (std::size_t i = in_recent; i < n; ++i) {
+            x.push_back(all[3 * i]);
+            y.push_back(all[3 * i + 1]);
+            z.push_back(all[3 * i + 2]);
+        }
+        in_recent = n;
+        tbb::parallel_invoke([&] { recent.emplace(x, y, z); }, beside);
+    }
+    bool empty_within(const Vec3& q, double radius) const {
+        return kept->empty_within(q, radius) && !(recent && recent->any_within(q, radius));
+    }
+};
+
+GrowingPoints::GrowingPoints(std::span<const double> xyz) : impl_(std::make_unique<Impl>()) {
+    impl_->all.assign(xyz.begin(), xyz.end());
+}
+GrowingPoints::~GrowingPoints() = default;
+void GrowingPoints::append(std::span<const double> xyz) { impl_->all.insert(impl_->all.end(), xyz.begin(), xyz.end()); }
+std::size_t GrowingPoints::size() const { return impl_->all.size() / 3; }
+
+std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor) {
+    GrowingPoints points(existing);
+    return select_points(c, points, factor);
+}
+
+std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor) {
+    const std::size_t n = c.size();
+    std::vector<double> cx(n), cy(n), cz(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        cx[i] = c[i].p[0];
+        cy[i] = c[i].p[1];
+        cz[i] = c[i].p[2];
+    }
+    std::vector<index_t> kept;
+    if (!n) return kept;
+    // The trees are independent and each build is serial: build them side by side.
+    GrowingPoints::Impl& points = *existing.impl_;
+    std::optional<PointIndex> cands;
+    points.prepare([&] { cands.emplace(cx, cy, cz); });
+    // Far enough from existing points: independent per candidate, parallel.
+    std::vector<std::uint8_t> free_of_points(n, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i)
+            free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h) ? 1 : 0;
+    });
+    // Among candidates: greedy in order, so earlier ones win whatever the thread count. The
+    // queries are independent (each candidate's earlier neighbours that passed the first test),
+    // so they run in parallel; only the greedy pass over those short lists is serial.
+    std::vector<std::vector<index_t>> earlier(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<Neighbor> near;
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            if (!free_of_points[i]) continue;
+            cands->within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+            for (const Neighbor& q : near)
+                if (q.index < i && free_of_points[q.index]) earlier[i].push_back(q.index);
+        }
+    });
+    std::vector<std::uint8_t> taken(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!free_of_points[i]) continue;
+        if (std::any_of(earlier[i].begin(), earlier[i].end(), [&](index_t j) { return taken[j] != 0; })) continue;
+        taken[i] = 1;
+        kept.push_back(static_cast<index_t>(i));
+    }
+    return kept;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,171 @@
+#include "engine/tets/refinement/odt_relaxation.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "engine/core/timing.hpp"
+#include "engine/delaunay/insertion_order.hpp"
+#include "engine/delaunay/triangulation.hpp"
+#include "engine/tets/point_colouring.hpp"  // build_incidence
+#include "engine/tets/optimise/smoothing.hpp"
+#include "engine/tets/tet_neighbourhood.hpp"
+
+namespace tubemesh::tets {
+namespace {
+
+// Per-thread scratch of one move.
+struct MoveScratch {
+    StarCorners corners;
+    std::vector<double> weight;
+};
+
+// Where p goes: towards its weighted ODT position, the whole way, or half, or a quarter,
+// whichever first leaves every tet of its star positive (with the other points where they are),
+// written to `to`. Returns whether it moved (not when it is at its target already, or no step
+// keeps its star positive).
+bool move_point(const TetDomain& dom, index_t p, std::span<const index_t> star, std::span<const double> sizes,
+                MoveScratch& s, double* to) {
+    gather_star_corners(dom, p, star, s.corners);
+    s.weight.resize(star.size());
+    for (std::size_t k = 0; k < star.size(); ++k) {
+        const index_t* v = dom.tets.vertex(star[k]);
+        const double h = 0.25 * (sizes[v[0]] + sizes[v[1]] + sizes[v[2]] + sizes[v[3]]);
+        s.weight[k] = 1.0 / (h * h * h);  // point density of the size field
+    }
+    const Vec3 here = point_vec(dom, p);
+    const Vec3 target = odt_target(s.corners, here, s.weight);
+    if (target.x == here.x && target.y == here.y && target.z == here.z) return false;
+    for (double step : {1.0, 0.5, 0.25}) {
+        const Vec3 x = here + step * (target - here);
+        if (!none_inverted(dom, p, star, x)) continue;
+        to[0] = x.x;
+        to[1] = x.y;
+        to[2] = x.z;
+        return true;
+    }
+    return false;
+}
+
+// One sweep of moves over the free points (ids >= fixed), all at once from the old positions
+// (Jacobi, as in Chen and Holst): each point stays inside its old star, so inside the region,
+// whatever its neighbours do, and the tets are built again afterwards, so the old ones need not
+// stay positive. As good as moving colour by colour (Gauss-Seidel), faster and with no
+// colouring (bench/results/tuning-notes.md).
+std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes) {
+    const Incidence inc = build_incidence(dom);
+    const index_t n = dom.point_count();
+    std::vector<double> moved_xyz = dom.xyz;
+    std::vector<std::uint8_t> moved(n, 0);
+    tbb::enumerable_thread_specific<MoveScratch> scratch;
+    tbb::parallel_for(tbb::blocked_range<index_t>(fixed, n, 64), [&](const tbb::blocked_range<index_t>& r) {
+        auto& s = scratch.local();
+        for (index_t p = r.begin(); p != r.end(); ++p) {
+            const auto star = inc.of(p);
+            if (!star.empty()) moved[p] = move_point(dom, p, star, sizes, s, moved_xyz.data() + std::size_t{3} * p);
+        }
+    });
+    dom.xyz.swap(moved_xyz);
+    std::uint64_t moves = 0;
+    for (std::uint8_t m : moved) moves += m;
+    return moves;
+}
+
+// Inserts the free points of `dom` again into a copy of the recovered mesh and makes the result
+// dom's tets. Each walk starts from the previous insertion. A walk that runs into the front (a
+// concave part of it) gets the point blocked; those points get one more walk once the others
+// are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
+// so the way between them is short and inside the region. Points that fail that too (none on
+// the reference cases) are left without tets. Returns how many needed the second walk.
+index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
+    const index_t fixed = recovered.point_count(), n = dom.point_count();
+    std::vector<index_t> used;
+    used.reserve(n - fixed);
+    {
+        std::vector<std::uint8_t> in_tet(n, 0);
+        for (index_t v : dom.tets.vertices()) in_tet[v] = 1;
+        for (index_t p = fixed; p < n; ++p)
+            if (in_tet[p]) used.push_back(p);
+    }
+    delaunay::Triangulation tri;
+    tri.adopt(std::span<const double>(recovered.xyz), recovered.tets.clone());
+    // Every free point keeps its id (unused ones too, never inserted): kernel id = domain id.
+    std::vector<index_t> ids(n - fixed);
+    for (index_t p = fixed; p < n; ++p) ids[p - fixed] = p;
+    tri.add_points(std::span<const double>(dom.xyz).subspan(std::size_t{3} * fixed), ids);
+    std::vector<double> used_xyz(3 * used.size());
+    for (std::size_t i = 0; i < used.size(); ++i) std::copy_n(dom.point(used[i]), 3, used_xyz.begin() + 3 * i);
+    std::vector<index_t> order = delaunay::curve_order(used_xyz);
+    for (index_t& k : order) k = used[k];
+    tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
+    constexpr index_t kMinPointsPerPart = 64;
+    tri.insert(order, parts, kMinPointsPerPart);
+    const std::vector<index_t> blocked = tri.blocked();
+    if (!blocked.empty()) {
+        std::vector<std::uint8_t> is_blocked(n, 0);
+        for (index_t p : blocked) is_blocked[p] = 1;
+        std::vector<std::vector<index_t>> near(blocked.size());
+        std::vector<index_t> slot(n, kNoIndex);
+        for (std::size_t i = 0; i < blocked.size(); ++i) slot[blocked[i]] = static_cast<index_t>(i);
+        for (index_t t = 0; t < dom.tets.size(); ++t) {
+            const index_t* v = dom.tets.vertex(t);
+            for (int i = 0; i < 4; ++i)
+                if (is_blocked[v[i]])
+                    for (int j = 0; j < 4; ++j)
+                        if (!is_blocked[v[j]]) near[slot[v[i]]].push_back(v[j]);
+        }
+        std::vector<index_t> tet_at(n, kNoIndex);
+        const delaunay::TetStore& now = tri.store();
+        for (index_t t = 0; t < now.size(); ++t) {
+            const index_t* v = now.vertex(t);
+            if (v[0] == delaunay::kFreeSlot) continue;
+            for (int i = 0; i < 4; ++i) tet_at[v[i]] = t;
+        }
+        for (std::size_t i = 0; i < blocked.size(); ++i)
+            for (index_t q : near[i])
+                if (tet_at[q] != kNoIndex) {
+                    tri.set_walk_start(blocked[i], tet_at[q]);
+                    break;
+                }
+        tri.insert(blocked, 1, kMinPointsPerPart);
+    }
+    dom.tets = tri.finish();
+    return static_cast<index_t>(blocked.size());
+}
+
+}  // namespace
+
+RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
+                             const RelaxationOptions& options) {
+    const auto t0 = Clock::now();
+    if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
+    if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
+    const index_t fixed = recovered.point_count();
+    if (fixed > domain.point_count() || recovered.front_points != domain.front_points)
+        throw Error("relaxation: the recovered mesh is not the start of the domain");
+    RelaxationStats stats;
+    if (options.iterations == 0) return stats;
+    const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
+    const unsigned parts = options.partitions ? options.partitions : threads;
+    tbb::task_arena arena(static_cast<int>(threads));
+    arena.execute([&] {
+        for (int it = 0; it < options.iterations; ++it) {
+            ++stats.iterations;
+            stats.moves += move_points(domain, fixed, sizes);
+            stats.second_walks += reinsert(domain, recovered, parts);
+        }
+    });
+    // A point lost in one iteration stays out of the later ones (it has no tet, so it neither
+    // moves nor is inserted again); remove them all.
+    const index_t before = domain.point_count();
+    drop_unused_points(domain, fixed);
+    stats.dropped = before - domain.point_count();
+    stats.seconds = seconds_since(t0);
+    return stats;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,56 @@
+#pragma once
+// Optimal-Delaunay relaxation of the interior points, between refinement and optimisation.
+//
+// Refinement puts each interior point where one front face asked for it and keeps it unless it
+// lies too close to another, so neighbouring points sit at uneven distances and the Delaunay
+// tets between them are uneven too; the optimisation's moves must each raise their own star's
+// quality, and stop in the first local optimum. One relaxation iteration instead moves every
+// free point to its star's size-weighted ODT position (the mean of the star's circumcentres,
+// each tet weighted by its volume / h^3, h the mean target size at its corners: Chen and Holst's
+// optimal Delaunay triangulation with the point density of the size field, as in Alliez et al.
+// 2005), kept only as far as no tet of its star inverts (its neighbours where they were), and
+// then inserts all free points again into the recovered front mesh: the tets become the
+// constrained Delaunay tets of the moved points (figures at RelaxationOptions::iterations).
+//
+// Parallel and deterministic: every point's move is computed from the positions before the
+// round, and the insertion runs the Delaunay kernel with a fixed part count.
+// Points [0, recovered.point_count()) (the front's and recovery's Steiner points) never move.
+#include <cstdint>
+#include <span>
+
+#include "engine/core/types.hpp"
+#include "engine/tets/tet_domain.hpp"
+
+namespace tubemesh::tets {
+
+struct RelaxationOptions {
+    // Move-and-reinsert rounds; 0 = none. Default 2: a third raises the mean collapse little
+    // for more time (bench/results/tuning-notes.md).
+    int iterations = 2;
+    // Worker threads; 0 = the caller's oneTBB arena.
+    unsigned threads = 0;
+    // Spatial parts of the kernel's parallel passes (DelaunayOptions::partitions); 0 = one per
+    // thread. The result depends on the input and this count only.
+    unsigned partitions = 0;
+};
+
+struct RelaxationStats {
+    int iterations = 0;
+    std::uint64_t moves = 0;   // point moves over all iterations
+    index_t second_walks = 0;  // reinsertions whose first walk ran into the front
+    index_t dropped = 0;       // points the kernel could not insert again (removed, ids compacted)
+    double seconds = 0;
+};
+
+// `recovered`: the domain as boundary recovery left it (before refinement); its points are the
+// first points of `domain` and its tets fill the same region. `sizes`: the target size at each
+// point of `domain` by id (point_sizes), read as the density's h; a point keeps its size when
+// it moves (within its star, so by about its h at most, and the field grows by at most g - 1
+// per unit length).
+// `domain` keeps its invariants (tet_domain.hpp); the points the kernel skips on reinsertion
+// (none on the reference meshes or the test cube) are removed and the later ids moved
+// down, in order.
+RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
+                             const RelaxationOptions& options = {});
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,109 @@
+#include "engine/tets/refinement/refine.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include "engine/core/timing.hpp"
+#include "engine/delaunay/insertion_order.hpp"
+#include "engine/delaunay/triangulation.hpp"
+#include "engine/tets/refinement/control_space.hpp"
+#include "engine/tets/refinement/interior_points.hpp"
+
+namespace tubemesh::tets {
+namespace {
+
+}  // namespace
+
+RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options,
+                            std::vector<double>* sizes_out) {
+    const auto t0 = Clock::now();
+    if (domain.tets.size() == 0) throw Error("refinement: the tet domain has no tetrahedra");
+    const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
+    const unsigned parts = options.partitions ? options.partitions : threads;
+    RefineStats stats;
+    const index_t first_new = domain.point_count();
+
+    tbb::task_arena arena(static_cast<int>(threads));
+    arena.execute([&] {
+        delaunay::Triangulation tri;
+        tri.adopt(domain.xyz, std::move(domain.tets));
+        domain.tets = delaunay::TetStore();
+        // Points in the mesh (inserted), for the distance test; kernel ids follow domain.xyz.
+        GrowingPoints live(domain.xyz);
+        TooBigMemo memo;
+        ProposalMemo proposals;
+        // h at every point, by kernel id: the front's and Steiner points' now, each inserted
+        // point's from its candidate.
+        std::vector<double> sizes = point_sizes(domain.xyz, space);
+        const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
+        for (; stats.rounds < options.max_rounds; ++stats.rounds) {
+            const MeshView view{tri.store(), domain.xyz, sizes};
+            const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
+            stats.too_big_left = static_cast<index_t>(faces.size());
+            if (faces.empty()) break;
+            std::vector<Candidate> cand = propose_points(view, faces, space, proposals, lattice);
+            stats.candidates += cand.size();
+            const std::vector<index_t> keep = select_points(cand, live, options.reject_factor);
+            stats.rejected_close += cand.size() - keep.size();
+            if (keep.empty()) break;
+            std::vector<double> kept_xyz(3 * keep.size());
+            for (std::size_t i = 0; i < keep.size(); ++i) std::copy_n(cand[keep[i]].p, 3, kept_xyz.begin() + 3 * i);
+            // Along the Hilbert curve over the batch: each walk starts near its point.
+            const std::vector<index_t> along = delaunay::curve_order(kept_xyz);
+            std::vector<Candidate> batch(keep.size());
+            for (std::size_t i = 0; i < keep.size(); ++i) batch[i] = cand[keep[along[i]]];
+
+            const index_t base = tri.point_count();
+            std::vector<double> xyz(3 * batch.size());
+            std::vector<index_t> ids(batch.size());
+            for (std::size_t i = 0; i < batch.size(); ++i) {
+                std::copy(batch[i].p, batch[i].p + 3, xyz.begin() + 3 * i);
+                ids[i] = base + static_cast<index_t>(i);
+            }
+            tri.add_points(xyz, ids);
+            domain.xyz.insert(domain.xyz.end(), xyz.begin(), xyz.end());
+            for (const Candidate& c : batch) sizes.push_back(c.h);
+            for (std::size_t i = 0; i < batch.size(); ++i) tri.set_walk_start(ids[i], batch[i].tet);
+            tri.reserve_tets(std::size_t{tri.store().size()} + 8 * batch.size() + 1024);
+            const std::size_t blocked_before = tri.blocked().size(), dup_before = tri.duplicates().size();
+            tri.insert(ids, parts, options.min_points_per_part);
+            // Only inserted points count as existing for the next round's distance test.
+            std::vector<std::uint8_t> dead(batch.size(), 0);
+            for (std::size_t k = blocked_before; k < tri.blocked().size(); ++k) dead[tri.blocked()[k] - base] = 1;
+            for (std::size_t k = dup_before; k < tri.duplicates().size(); ++k) dead[tri.duplicates()[k].first - base] = 1;
+            std::size_t added = 0;
+            for (std::size_t i = 0; i < batch.size(); ++i)
+                if (!dead[i]) {
+                    live.append(std::span<const double>(xyz).subspan(3 * i, 3));
+                    ++added;
+                }
+            if (added == 0) break;
+        }
+        stats.size_tests = memo.tests;
+        stats.proposals_reused = proposals.reused_total.load();
+        const delaunay::KernelCounters& k = tri.counters();
+        stats.blocked = k.blocked;
+        stats.shrunk_cavities = k.shrunk;
+        stats.kernel_conflicts = k.conflicts;
+        stats.duplicates = tri.duplicates().size();
+        domain.tets = tri.finish();
+
+        // Drop the points the kernel skipped: renumber the new points densely, in order.
+        const std::vector<index_t> to = drop_unused_points(domain, first_new);
+        const index_t next = domain.point_count();
+        if (sizes_out) {
+            sizes_out->assign(next, 0.0);
+            for (std::size_t v = 0; v < to.size(); ++v)
+                if (to[v] != kNoIndex) (*sizes_out)[to[v]] = sizes[v];
+        }
+        stats.inserted = next - first_new;
+    });
+    stats.tets = domain.tets.size();
+    stats.seconds = seconds_since(t0);
+    return stats;
+}
+
+}  // namespace tubemesh::tets

@@ -1,0 +1,122 @@
+#include "geom/import/step_write.hpp"
+
+#include <Interface_Static.hxx>
+#include <STEPControl_Writer.hxx>
+#include <Standard_Failure.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepRepr_Representation.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <StepShape_ShapeDefinitionRepresentation.hxx>
+#include <StepShape_SolidModel.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TransferBRep.hxx>
+#include <TransferBRep_ShapeMapper.hxx>
+#include <Transfer_FinderProcess.hxx>
+#include <XSControl_TransferWriter.hxx>
+#include <XSControl_WorkSession.hxx>
+
+#include <unistd.h>
+
+#include <string>
+#include <string_view>
+
+#include "engine/core/types.hpp"
+#include "engine/io/temporary_files.hpp"
+#include "geom/model_occt.hpp"
+#include "geom/import/occt_messages.hpp"
+#include "geom/import/step_write_occt.hpp"
+#include "geom/import/xstep_state.hpp"
+
+namespace tubemesh::geom {
+
+namespace {
+
+struct StepUnit {
+    std::string_view name;      // as ImportReport spells it
+    const char* keyword;        // value of the write.step.unit parameter
+    double millimetres;         // the unit's length in millimetres
+};
+
+// The units write.step.unit knows (UnitsMethods_LengthUnit), under the names import reports.
+constexpr StepUnit kStepUnits[] = {
+    {"millimetre", "MM", 1.0},       {"metre", "M", 1000.0},       {"centimetre", "CM", 10.0},
+    {"kilometre", "KM", 1.0e6},      {"micron", "UM", 1.0e-3},     {"inch", "INCH", 25.4},
+    {"foot", "FT", 304.8},           {"mile", "MI", 1609344.0},    {"mil", "MIL", 0.0254},
+    {"microinch", "UIN", 2.54e-5},
+};
+
+const StepUnit& step_unit(const std::string& name) {
+    for (const StepUnit& u : kStepUnits)
+        if (u.name == name) return u;
+    return kStepUnits[0];
+}
+
+}  // namespace
+
+namespace {
+
+// The name of the representation items each shape became: a solid of a compound is written
+// as a shape definition whose representation holds its MANIFOLD_SOLID_BREP.
+void name_items(STEPControl_Writer& writer, std::span<const NamedShape> names) {
+    const Handle(Transfer_FinderProcess) process = writer.WS()->TransferWriter()->FinderProcess();
+    for (const auto& [shape, name] : names) {
+        const Handle(TransferBRep_ShapeMapper) mapper = TransferBRep::ShapeMapper(process, shape);
+        const Handle(Standard_Transient) found = process->FindTransient(mapper);
+        const Handle(TCollection_HAsciiString) text = new TCollection_HAsciiString(name.c_str());
+        if (const auto item = Handle(StepRepr_RepresentationItem)::DownCast(found); !item.IsNull()) {
+            item->SetName(text);
+        } else if (const auto sdr = Handle(StepShape_ShapeDefinitionRepresentation)::DownCast(found); !sdr.IsNull()) {
+            const Handle(StepRepr_Representation) rep = sdr->UsedRepresentation();
+            for (int i = 1; !rep.IsNull() && i <= rep->NbItems(); ++i)
+                if (rep->ItemsValue(i)->IsKind(STANDARD_TYPE(StepShape_SolidModel))) rep->ItemsValue(i)->SetName(text);
+        }
+    }
+}
+
+}  // namespace
+
+void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& path, const std::string& length_unit,
+                      std::span<const NamedShape> names) {
+    silence_occt_output();
+    const StepUnit& unit = step_unit(length_unit);
+    std::filesystem::path tmp = path;
+    tmp += ".tmp-tubemesh-" + std::to_string(::getpid());  // two runs writing one target keep apart
+    const io::TrackedTemporary tracked(tmp);
+    try {
+        const XstepSession session;
+        STEPControl_Writer writer;
+        Interface_Static::SetCVal("write.step.unit", unit.keyword);
+        struct RestoreDefaultUnit {
+            ~RestoreDefaultUnit() { Interface_Static::SetCVal("write.step.unit", "MM"); }
+        } restore;
+        // Local and write units equal: the writer labels the coordinates with the unit and does
+        // not scale them (OCCT converts between the two when they differ).
+        writer.Model()->SetLocalLengthUnit(unit.millimetres);
+        writer.Model()->SetWriteLengthUnit(unit.millimetres);
+        if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
+            throw Error("cannot write " + path.string() + ": OpenCASCADE could not translate the shape to STEP");
+        name_items(writer, names);
+        if (writer.Write(tmp.c_str()) != IFSelect_RetDone)
+            throw Error("cannot write " + path.string() + ": the directory is missing or not writable");
+    } catch (const Standard_Failure& e) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw Error("cannot write " + path.string() + ": OpenCASCADE failed with \"" + e.GetMessageString() + "\"");
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw;
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw Error("cannot write " + path.string() + ": " + ec.message());
+    }
+}
+
+void write_step(const Model& model, const std::filesystem::path& path) {
+    write_step_shape(solid_of(model), path, model.report().length_unit);
+}
+
+}  // namespace tubemesh::geom

@@ -1,0 +1,86 @@
+#include "geom/sizing/gap_sizes.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_Surface.hxx>
+
+#include <algorithm>
+#include <cmath>
+
+#include "geom/model_occt.hpp"
+#include "geom/sizing/sizing_distances.hpp"
+
+namespace tubemesh::geom {
+namespace {
+
+// Grid points per hole face: enough for a quarter-radius spacing on the longest pipes in the
+// generators, a bound on the time a very long hole can cost.
+constexpr double kMaxSamples = 1e5;
+
+struct Near {
+    TopoDS_Face face;
+    Handle(Geom_Surface) surface;
+    std::unique_ptr<BRepTopAdaptor_FClass2d> inside;
+};
+
+// Length of the face's iso-lines through the middle of its parameter box, sampled.
+double iso_length(const BRepAdaptor_Surface& s, bool along_u, double u0, double u1, double v0, double v1) {
+    double length = 0;
+    gp_Pnt last;
+    for (int i = 0; i <= 32; ++i) {
+        const double t = i / 32.0;
+        const gp_Pnt p = along_u ? s.Value(u0 + t * (u1 - u0), (v0 + v1) / 2) : s.Value((u0 + u1) / 2, v0 + t * (v1 - v0));
+        if (i > 0) length += p.Distance(last);
+        last = p;
+    }
+    return length;
+}
+
+}  // namespace
+
+std::vector<SizeSource> gap_size_sources(const Model& model, const TubeSearch& tubes, double size) {
+    std::vector<SizeSource> out;
+    for (const HoleGroup& group : hole_groups(model, tubes, [size](double) { return size; })) {
+        if (group.near_faces.empty()) continue;
+        std::vector<Near> near;
+        for (int g : group.near_faces) {
+            const TopoDS_Face face = face_of(model, g);
+            near.push_back({face, BRep_Tool::Surface(face), std::make_unique<BRepTopAdaptor_FClass2d>(face, 1e-9)});
+        }
+        for (int f : group.faces) {
+            const TopoDS_Face face = face_of(model, f);
+            const BRepAdaptor_Surface surface(face);
+            const BRepTopAdaptor_FClass2d inside(face, 1e-9);
+            double u0, u1, v0, v1;
+            BRepTools::UVBounds(face, u0, u1, v0, v1);
+            const double lu = iso_length(surface, true, u0, u1, v0, v1), lv = iso_length(surface, false, u0, u1, v0, v1);
+            double step = group.radius / 4;
+            step = std::max(step, std::sqrt(lu * lv / kMaxSamples));
+            const int nu = std::max(1, static_cast<int>(std::ceil(lu / step)));
+            const int nv = std::max(1, static_cast<int>(std::ceil(lv / step)));
+            for (int i = 0; i <= nu; ++i)
+                for (int j = 0; j <= nv; ++j) {
+                    const double u = u0 + (u1 - u0) * i / nu, v = v0 + (v1 - v0) * j / nv;
+                    if (inside.Perform(gp_Pnt2d(u, v)) == TopAbs_OUT) continue;
+                    const gp_Pnt p = surface.Value(u, v);
+                    for (const Near& n : near) {
+                        GeomAPI_ProjectPointOnSurf foot(p, n.surface);
+                        if (!foot.IsDone() || foot.NbPoints() == 0 || !(foot.LowerDistance() < size)) continue;
+                        double fu, fv;
+                        foot.LowerDistanceParameters(fu, fv);
+                        if (n.inside->Perform(gp_Pnt2d(fu, fv)) == TopAbs_OUT) continue;
+                        const double d = foot.LowerDistance();
+                        const gp_Pnt q = foot.NearestPoint();
+                        out.push_back({{p.X(), p.Y(), p.Z()}, d});
+                        out.push_back({{q.X(), q.Y(), q.Z()}, d});
+                    }
+                }
+        }
+    }
+    return out;
+}
+
+}  // namespace tubemesh::geom

@@ -1,0 +1,21 @@
+#pragma once
+// Sizes for the narrow gaps beside holes that are not tubes (meshed with tets): where such a
+// hole's wall passes a face it does not touch closer than S, the faces on both sides of the gap
+// get triangles no larger than the gap, so the tets across it are not slivers and boundary
+// recovery can find them. (A tube's ring is thinned by the sizing rules instead; a gap under
+// kThinnestRing of the radius is refused by the diagnosis before this.)
+//
+// No OpenCASCADE header here.
+#include <vector>
+
+#include "engine/surface/size_field.hpp"
+#include "geom/model.hpp"
+#include "geom/tubes/tubes.hpp"
+
+namespace tubemesh::geom {
+
+// Sources at the hole walls' points (a grid a quarter of the radius apart) whose distance d to
+// a near face is below `size`, and at their feet on that face, each of size d.
+std::vector<SizeSource> gap_size_sources(const Model& model, const TubeSearch& tubes, double size);
+
+}  // namespace tubemesh::geom

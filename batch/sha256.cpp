@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "engine/core/types.hpp"
+#include "engine/io/file_bytes.hpp"
 
 namespace tubemesh::batch {
 
@@ -50,6 +51,7 @@ std::string sha256_hex(std::string_view bytes) {
 }
 
 std::string sha256_file(const std::filesystem::path& path) {
+    io::require_regular_file(path);
     std::unique_ptr<std::FILE, decltype(&std::fclose)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!f) throw Error("cannot read '" + path.string() + "': " + std::strerror(errno));
     Digest d;

@@ -120,6 +120,7 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         throw Error(fmt::format("the number of nodes around a tube must be at least 3 (4 or more recommended), got {}",
                                 options.discretize.ring_nodes));
     PreparedModel p;
+    std::vector<HoleGroup> holes;  // holes that are not tubes: for the diagnosis and the gap sizes
     auto t0 = Clock::now();
     {
         PhaseProgress progress(options.progress, "tubes", 1);
@@ -139,7 +140,8 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
         refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
         diagnose_clearances(p.tubes, p.plan);
-        diagnose_hole_clearances(measure_hole_clearances(model, p.tubes));
+        holes = hole_groups(model, p.tubes, p.plan.size);
+        diagnose_hole_clearances(measure_hole_clearances(model, holes));
         p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
         progress.finish();
     }
@@ -154,7 +156,7 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         PhaseProgress progress(options.progress, "discretize", 1);
         p.geometry = discretize(model, p.tubes.tubes, p.plan, options.discretize);
         p.maps = make_surface_maps(model);
-        p.gap_sizes = gap_size_sources(model, p.tubes, p.plan.size);
+        p.gap_sizes = gap_size_sources(model, holes, p.plan.size);
         progress.finish();
     }
     std::size_t edge_points = 0, stations = 0;

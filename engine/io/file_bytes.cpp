@@ -28,12 +28,19 @@ struct Descriptor {
 
 }  // namespace
 
+void require_regular_file(const std::filesystem::path& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) return;
+    if (S_ISDIR(info.st_mode)) fail(path, EISDIR);
+    if (!S_ISREG(info.st_mode)) throw Error("cannot read '" + path.string() + "': it is not a regular file");
+}
+
 std::string read_file_bytes(const std::filesystem::path& path) {
+    require_regular_file(path);  // before open(): opening a FIFO blocks
     Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
     if (file.fd < 0) fail(path, errno);
     struct stat info {};
     if (::fstat(file.fd, &info) != 0) fail(path, errno);
-    if (S_ISDIR(info.st_mode)) fail(path, EISDIR);
 
     // The size is a hint only: read until end of file whatever it says. One spare byte lets
     // the final zero-byte read happen without growing the buffer.

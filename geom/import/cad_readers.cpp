@@ -25,6 +25,7 @@
 #include <fstream>
 
 #include "engine/core/types.hpp"
+#include "engine/io/file_bytes.hpp"
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/xstep_state.hpp"
 
@@ -166,8 +167,7 @@ CadFormat detect_cad_format(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         throw Error("cannot open " + quoted(path) + ": no such file");
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error("cannot read " + quoted(path) + ": it is not a regular file");
+    io::require_regular_file(path);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error("cannot open " + quoted(path) + ": permission denied or unreadable");
 

@@ -5,13 +5,12 @@
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
-#include <Geom_Surface.hxx>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "geom/model_occt.hpp"
-#include "geom/sizing/sizing_distances.hpp"
 
 namespace tubemesh::geom {
 namespace {
@@ -20,11 +19,19 @@ namespace {
 // generators, a bound on the time a very long hole can cost.
 constexpr double kMaxSamples = 1e5;
 
+// A near face, set up once: its projector (over the face's parameter box) and its classifier.
 struct Near {
-    TopoDS_Face face;
-    Handle(Geom_Surface) surface;
+    std::unique_ptr<GeomAPI_ProjectPointOnSurf> project;
     std::unique_ptr<BRepTopAdaptor_FClass2d> inside;
 };
+
+Near near_face(const TopoDS_Face& face) {
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    Near n{std::make_unique<GeomAPI_ProjectPointOnSurf>(), std::make_unique<BRepTopAdaptor_FClass2d>(face, 1e-9)};
+    n.project->Init(BRep_Tool::Surface(face), u0, u1, v0, v1);
+    return n;
+}
 
 // Length of the face's iso-lines through the middle of its parameter box, sampled.
 double iso_length(const BRepAdaptor_Surface& s, bool along_u, double u0, double u1, double v0, double v1) {
@@ -41,15 +48,12 @@ double iso_length(const BRepAdaptor_Surface& s, bool along_u, double u0, double 
 
 }  // namespace
 
-std::vector<SizeSource> gap_size_sources(const Model& model, const TubeSearch& tubes, double size) {
+std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<HoleGroup>& holes, double size) {
     std::vector<SizeSource> out;
-    for (const HoleGroup& group : hole_groups(model, tubes, [size](double) { return size; })) {
+    for (const HoleGroup& group : holes) {
         if (group.near_faces.empty()) continue;
         std::vector<Near> near;
-        for (int g : group.near_faces) {
-            const TopoDS_Face face = face_of(model, g);
-            near.push_back({face, BRep_Tool::Surface(face), std::make_unique<BRepTopAdaptor_FClass2d>(face, 1e-9)});
-        }
+        for (int g : group.near_faces) near.push_back(near_face(face_of(model, g)));
         for (int f : group.faces) {
             const TopoDS_Face face = face_of(model, f);
             const BRepAdaptor_Surface surface(face);
@@ -67,7 +71,8 @@ std::vector<SizeSource> gap_size_sources(const Model& model, const TubeSearch& t
                     if (inside.Perform(gp_Pnt2d(u, v)) == TopAbs_OUT) continue;
                     const gp_Pnt p = surface.Value(u, v);
                     for (const Near& n : near) {
-                        GeomAPI_ProjectPointOnSurf foot(p, n.surface);
+                        GeomAPI_ProjectPointOnSurf& foot = *n.project;
+                        foot.Perform(p);
                         if (!foot.IsDone() || foot.NbPoints() == 0 || !(foot.LowerDistance() < size)) continue;
                         double fu, fv;
                         foot.LowerDistanceParameters(fu, fv);

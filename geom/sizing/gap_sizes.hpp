@@ -10,12 +10,12 @@
 
 #include "engine/surface/size_field.hpp"
 #include "geom/model.hpp"
-#include "geom/tubes/tubes.hpp"
+#include "geom/sizing/sizing_distances.hpp"
 
 namespace tubemesh::geom {
 
 // Sources at the hole walls' points (a grid a quarter of the radius apart) whose distance d to
 // a near face is below `size`, and at their feet on that face, each of size d.
-std::vector<SizeSource> gap_size_sources(const Model& model, const TubeSearch& tubes, double size);
+std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<HoleGroup>& holes, double size);
 
 }  // namespace tubemesh::geom

@@ -206,8 +206,7 @@ Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& t
     return c;
 }
 
-std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes,
-                                   const std::function<double(double)>& reach) {
+std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes, double size) {
     std::vector<HoleGroup> out;
     TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
     std::vector<Bnd_Box> boxes;
@@ -236,7 +235,7 @@ std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes,
                 if (k == 0) continue;
                 for (const TopoDS_Shape& g : edge_faces(k)) touching.insert(model.impl().faces.FindIndex(g));
             }
-        const double within = reach(h.radius);
+        const double within = std::max(h.radius, size);
         for (int g = 1; g <= model.face_count(); ++g) {
             if (touching.count(g)) continue;
             bool near = false;
@@ -248,9 +247,9 @@ std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes,
     return out;
 }
 
-std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes) {
+std::vector<HoleClearance> measure_hole_clearances(const Model& model, const std::vector<HoleGroup>& holes) {
     std::vector<HoleClearance> out;
-    for (const HoleGroup& group : hole_groups(model, tubes, [](double r) { return r; })) {
+    for (const HoleGroup& group : holes) {
         HoleClearance h{group.faces, group.radius};
         for (int f : group.faces)
             for (int g : group.near_faces) {

@@ -7,7 +7,6 @@
 // to the tubes' centre-line polylines (TubeInfo::centre_line) minus r_max: exact up to the
 // polylines' 1%-of-r chord error, and far cheaper than BRepExtrema between B-spline walls
 // (seconds per pair on a long serpentine pipe).
-#include <functional>
 #include <limits>
 #include <vector>
 
@@ -27,25 +26,24 @@ struct Clearances {
 Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& tubes);
 
 // A hole that is not a tube (a rejected face group) whose faces are cylinders or tori, with
-// the faces it does not touch that come within `reach` of it (by bounding boxes): the faces a
-// narrow gap can lie between.
+// the faces it does not touch whose boxes come within max(its radius, `size`) of its own: the
+// faces a narrow gap can lie between (the diagnosis looks within the radius, the gap sizes
+// within S). Found once per run for both.
 struct HoleGroup {
     std::vector<int> faces;       // the rejected group
     double radius = 0;            // its smallest cylinder or torus (minor) radius
     std::vector<int> near_faces;  // not in the group, sharing no edge with it, boxes within reach
 };
-// reach(radius): how far to look from a group of that radius.
-std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes,
-                                   const std::function<double(double)>& reach);
+std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes, double size);
 
-// The closest a hole group comes to one of its near faces (reach: its radius).
+// The closest each hole group comes to one of its near faces.
 struct HoleClearance {
     std::vector<int> hole_faces;
     double radius = 0;
     double distance = std::numeric_limits<double>::infinity();
     int face = 0;  // the face attaining it
 };
-std::vector<HoleClearance> measure_hole_clearances(const Model& model, const TubeSearch& tubes);
+std::vector<HoleClearance> measure_hole_clearances(const Model& model, const std::vector<HoleGroup>& holes);
 
 // Diagonal of the solid's bounding box, for the default S: BRepBndLib::Add over the faces
 // that are no tube's wall. Not Model::bounds(): its optimal box took 2 s on a 190 m serpentine

@@ -66,10 +66,12 @@ void BM_Delaunay(benchmark::State& state) {
     tubemesh::delaunay::DelaunayStats stats;
     double rss_growth = 0;
     bool peak_ok = true;
+    const tubemesh::Parallelism par{threads, threads};  // one part per thread
+    const auto limit = tubemesh::limit_threads(par);
     for (auto _ : state) {
         peak_ok = reset_peak_rss() && peak_ok;
         const long before = status_kb("VmRSS");
-        auto r = tubemesh::delaunay::delaunay(p.x, p.y, p.z, {.threads = threads});
+        auto r = tubemesh::delaunay::delaunay(p.x, p.y, p.z, par);
         rss_growth = 1024.0 * double(status_kb("VmHWM") - before);
         stats = r.stats;
         benchmark::DoNotOptimize(r.tets.vertices().data());

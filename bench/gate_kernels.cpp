@@ -164,10 +164,11 @@ Kernel delaunay_kernel(std::string name, bool quick, std::function<Points()> inp
     auto run = [name, input, threads, box](Meter& meter) {
         const Points p = input();
         delaunay::DelaunayOptions options;
-        options.threads = threads;
         options.bounding_box = box;
+        const Parallelism par{threads, threads};  // one part per thread
+        const auto limit = limit_threads(par);
         meter.begin();
-        const std::size_t tets = delaunay::delaunay(p.x, p.y, p.z, options).tet_count();
+        const std::size_t tets = delaunay::delaunay(p.x, p.y, p.z, par, options).tet_count();
         meter.end(name);
         return std::vector<Part>{{name, double(tets)}};
     };

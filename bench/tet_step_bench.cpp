@@ -415,10 +415,10 @@ void BM_GmshSolid(benchmark::State& state, const std::string& name) {
 void BM_TetStep(benchmark::State& state, const std::string& name, unsigned threads) {
     const TetCase& c = tet_case(name);
     if (!c.error.empty()) return state.SkipWithError(c.error.c_str());
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const Parallelism par{threads, MeshOptions{}.tet_parts};
+    const auto limit = limit_threads(par);
     tets::TetStepOptions options;
     options.far_size = c.far_size;
-    options.threads = threads;
     HybridMesh mesh;
     tets::TetStepStats stats;
     double rss_growth = 0, cpu = 0;
@@ -433,7 +433,7 @@ void BM_TetStep(benchmark::State& state, const std::string& name, unsigned threa
         const double cpu_before = bench::process_cpu_seconds();
         state.ResumeTiming();
         try {
-            stats = tets::build_tets(mesh, c.front, region, options);
+            stats = tets::build_tets(mesh, c.front, region, par, options);
             cpu = bench::process_cpu_seconds() - cpu_before;
         } catch (const std::exception& e) {
             failure = e.what();

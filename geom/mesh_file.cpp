@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "engine/core/timing.hpp"
-#include "engine/pipeline/thread_limit.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/describe_groups.hpp"
@@ -71,7 +70,7 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
 }  // namespace
 
 MeshRun mesh_file(const std::filesystem::path& path, const MeshOptions& options, const MeshFileOptions& file) {
-    const auto limit = limit_threads(options.threads);
+    const auto limit = limit_threads(run_parallelism(options));
     const auto t0 = Clock::now();
     PhaseProgress progress(options.progress, "import", 1);
     ImportOptions import;
@@ -82,7 +81,7 @@ MeshRun mesh_file(const std::filesystem::path& path, const MeshOptions& options,
 }
 
 MeshRun mesh_model(const Model& model, const MeshOptions& options, Stage until) {
-    const auto limit = limit_threads(options.threads);
+    const auto limit = limit_threads(run_parallelism(options));
     return mesh_loaded(model, options, until, std::nullopt);
 }
 
@@ -91,7 +90,7 @@ MeshRun mesh_preset(const std::string& preset, const MeshOptions& options, Stage
 }
 
 MeshRun mesh_spec(const BlockSpec& spec, const MeshOptions& options, Stage until) {
-    const auto limit = limit_threads(options.threads);
+    const auto limit = limit_threads(run_parallelism(options));
     const auto t0 = Clock::now();
     PhaseProgress progress(options.progress, "build", 1);
     const BuiltBlock block = build_block(spec);

@@ -53,7 +53,23 @@ Points grid(int nx, int ny, int nz) {
     return p;
 }
 
-DelaunayResult run(const Points& p, DelaunayOptions o = {}) { return delaunay::delaunay(p.x, p.y, p.z, o); }
+// A kernel run with `threads` workers (0: all cores) and `partitions` parts (0: one per thread),
+// resolved as a mesh run resolves them.
+struct RunOptions {
+    int threads = 0;
+    unsigned partitions = 0;
+    index_t min_points_per_part = DelaunayOptions{}.min_points_per_part;
+    bool bounding_box = false;
+};
+
+DelaunayResult run(const Points& p, RunOptions o = {}) {
+    const Parallelism par = resolve_parallelism(o.threads, o.partitions);
+    const auto limit = limit_threads(par);
+    DelaunayOptions options;
+    options.min_points_per_part = o.min_points_per_part;
+    options.bounding_box = o.bounding_box;
+    return delaunay::delaunay(p.x, p.y, p.z, par, options);
+}
 
 struct Summary {
     std::size_t tets = 0, hull_faces = 0, vertices = 0;
@@ -275,9 +291,9 @@ TEST(Delaunay, FlatSetWithOneApex) {
 
 TEST(Delaunay, RejectsBadInput) {
     std::vector<double> x{0, 1, 0, 0}, y{0, 0, 1, 0}, z{0, 0, 0};
-    EXPECT_THROW(delaunay::delaunay(x, y, z), Error);
+    EXPECT_THROW(delaunay::delaunay(x, y, z, Parallelism{}), Error);
     z.push_back(std::nan(""));
-    EXPECT_THROW(delaunay::delaunay(x, y, z), Error);
+    EXPECT_THROW(delaunay::delaunay(x, y, z, Parallelism{}), Error);
 }
 
 TEST(Delaunay, RandomPointsMatchBruteForce) {

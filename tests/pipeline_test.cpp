@@ -150,7 +150,7 @@ TEST(Pipeline, OnePartPerThreadWhenAsked) {
     MeshOptions one, two;
     one.threads = 1;
     two.threads = 2;
-    one.tets.partitions = two.tets.partitions = 0;
+    one.tet_parts = two.tet_parts = 0;
     const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), one);
     const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), two);
     EXPECT_EQ(a.tet_stats.partitions, 1u);
@@ -211,6 +211,24 @@ TEST(Pipeline, TetPhaseReportsWhereItsTimeWent) {
     EXPECT_EQ(count("rescue points"), double(r.tet_stats.optimise.inserted_points));
     EXPECT_LE(count("rescue points"), count("worst tets rescued"));
     EXPECT_LE(count("rescue points"), count("new nodes"));
+}
+
+// The run's parallelism is resolved once, with one meaning of 0 for each value.
+TEST(Pipeline, ParallelismIsResolvedFromTheRequest) {
+    const unsigned cores = static_cast<unsigned>(usable_cores());
+    const Parallelism all = resolve_parallelism(0, 2);
+    EXPECT_EQ(all.threads, cores);
+    EXPECT_EQ(all.parts, 2u);
+    const Parallelism one = resolve_parallelism(1, 0);
+    EXPECT_EQ(one.threads, 1u);
+    EXPECT_EQ(one.parts, 1u);
+    const Parallelism many = resolve_parallelism(4096, 0);
+    EXPECT_EQ(many.threads, cores);
+    EXPECT_EQ(many.parts, cores);
+    MeshOptions o;
+    o.threads = 1;
+    EXPECT_EQ(run_parallelism(o).parts, MeshOptions{}.tet_parts);
+    EXPECT_THROW(resolve_parallelism(-1, 2), Error);
 }
 
 TEST(Pipeline, NegativeThreadCountIsAnError) {

@@ -33,6 +33,12 @@ using Tri = std::array<index_t, 3>;
 
 // Front: points on a sphere of radius 1 (strictly convex, so every one is a hull vertex);
 // then random points in the ball of radius 0.9: a Delaunay mesh of them is full of slivers.
+// optimise() with oneTBB limited to `threads` workers.
+OptimiseStats optimise_on(unsigned threads, TetDomain& d, const OptimiseOptions& o = {}) {
+    const auto limit = limit_threads(Parallelism{threads, 1});
+    return optimise(d, o);
+}
+
 TetDomain sphere_domain(index_t surface, index_t inside, unsigned seed) {
     std::vector<double> x, y, z;
     const double golden = M_PI * (3.0 - std::sqrt(5.0));
@@ -51,7 +57,7 @@ TetDomain sphere_domain(index_t surface, index_t inside, unsigned seed) {
         y.push_back(b);
         z.push_back(c);
     }
-    auto result = delaunay::delaunay(x, y, z);
+    auto result = delaunay::delaunay(x, y, z, Parallelism{});
     TetDomain d;
     for (std::size_t i = 0; i < x.size(); ++i) d.xyz.insert(d.xyz.end(), {x[i], y[i], z[i]});
     d.front_points = surface;
@@ -235,11 +241,8 @@ TEST(test_tets_optimise, OptimiseImprovesAndKeepsTheDomain) {
 
 TEST(test_tets_optimise, SameArraysForOneAndTwoThreads) {
     TetDomain one = sphere_domain(200, 800, 4), two = sphere_domain(200, 800, 4);
-    OptimiseOptions o1, o2;
-    o1.threads = 1;
-    o2.threads = 2;
-    optimise(one, o1);
-    optimise(two, o2);
+    optimise_on(1, one);
+    optimise_on(2, two);
     ASSERT_EQ(one.tets.size(), two.tets.size());
     EXPECT_EQ(one.xyz, two.xyz);
     EXPECT_TRUE(std::ranges::equal(one.tets.vertices(), two.tets.vertices()));
@@ -462,11 +465,9 @@ TEST(test_tets_optimise, RescueLiftsTetsOfFrontPoints) {
         OptimiseOptions no_rescue, rescue, two_threads;
         no_rescue.rescue_below = 0;
         rescue.rescue_below = two_threads.rescue_below = 0.45;
-        rescue.threads = 1;
-        two_threads.threads = 2;
         const OptimiseStats s_off = optimise(off, no_rescue);
-        const OptimiseStats s_on = optimise(on, rescue);
-        optimise(on2, two_threads);
+        const OptimiseStats s_on = optimise_on(1, on, rescue);
+        optimise_on(2, on2, two_threads);
         EXPECT_EQ(s_off.rescued, 0u);
         rescued += s_on.rescued;
         expect_valid(on);
@@ -563,10 +564,8 @@ TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     const auto front = front_set(one);
     const double vol = domain_volume(one);
     OptimiseOptions o;
-    o.threads = 1;
-    const OptimiseStats s = optimise(one, o);
-    o.threads = 2;
-    optimise(two, o);
+    const OptimiseStats s = optimise_on(1, one, o);
+    optimise_on(2, two, o);
     o.rescue_below = 0;
     const OptimiseStats without = optimise(plain, o);
     EXPECT_GT(s.inserted_points, 0u);

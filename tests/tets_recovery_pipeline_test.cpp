@@ -37,7 +37,7 @@ void recover_and_check(const geom::BlockSpec& spec, const std::string& label) {
         front.push_back(id[v]);
     }
     tets::RecoveryStats st;
-    const tets::TetDomain d = tets::recover_boundary(xyz, front, {}, &st);
+    const tets::TetDomain d = tets::recover_boundary(xyz, front, Parallelism{}, {}, &st);
     double enclosed = 0;
     const Vec3 o = tets::point_vec(d, 0);
     for (std::size_t i = 0; i < front.size(); i += 3)

@@ -98,7 +98,7 @@ Front cube_surface(int n) {
 TEST(TetsRecovery, CubeSurface) {
     const Front f = cube_surface(3);
     RecoveryStats st;
-    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
+    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, &st);
     expect_valid_domain(f, d);
     std::printf("cube: %u tets, missing edges %u faces %u, flips23 %llu removals %llu, steiner %u/%u\n", st.tets,
                 st.missing_edges, st.missing_faces, (unsigned long long)st.flips23,
@@ -112,7 +112,7 @@ TEST(TetsRecovery, BoxWithBoxShapedCavity) {
     box_front(lo, hi, 4, true, f.xyz, f.tris);
     box_front(ilo, ihi, 2, false, f.xyz, f.tris);
     RecoveryStats st;
-    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
+    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, &st);
     expect_valid_domain(f, d);
 }
 
@@ -152,7 +152,7 @@ TEST(TetsRecovery, LongThinTrianglesNeedRecovery) {
         f.tris.insert(f.tris.end(), {bot[i], top[j], top[i]});
     }
     RecoveryStats st;
-    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
+    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, &st);
     expect_valid_domain(f, d);
     std::printf("thin: %u tets, missing edges %u faces %u, flips23 %llu removals %llu, steiner %u/%u kept %u\n",
                 st.tets, st.missing_edges, st.missing_faces, (unsigned long long)st.flips23,
@@ -164,19 +164,19 @@ TEST(TetsRecovery, LongThinTrianglesNeedRecovery) {
 TEST(TetsRecovery, OpenFrontIsAnError) {
     Front f = cube_surface(2);
     f.tris.resize(f.tris.size() - 3);
-    EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris), Error);
+    EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris, Parallelism{}), Error);
 }
 
 TEST(TetsRecovery, InconsistentOrientationIsAnError) {
     Front f = cube_surface(2);
     std::swap(f.tris[0], f.tris[1]);
-    EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris), Error);
+    EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris, Parallelism{}), Error);
 }
 
 TEST(TetsRecovery, InwardFrontIsAnError) {
     Front f = cube_surface(2);
     for (std::size_t i = 0; i < f.tris.size(); i += 3) std::swap(f.tris[i + 1], f.tris[i + 2]);
-    EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris), Error);
+    EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris, Parallelism{}), Error);
 }
 
 }  // namespace
@@ -195,7 +195,7 @@ TEST_P(TetsRecoveryGrid, BoxWithCavityIsRecovered) {
     box_front(lo, hi, 2 + k, true, f.xyz, f.tris);
     box_front(ilo, ihi, 1 + k % 4, false, f.xyz, f.tris);
     RecoveryStats st;
-    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
+    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, &st);
     expect_valid_domain(f, d);
     EXPECT_LE(st.steiner_removed + st.steiner_kept, st.steiner_inserted);
     EXPECT_EQ(d.point_count(), d.front_points + st.steiner_kept);
@@ -213,8 +213,8 @@ TEST(TetsRecovery, SameInputGivesSameDomain) {
     const double ilo[3] = {1, 1.2, 0.9}, ihi[3] = {2, 1.7, 2.1};
     box_front(lo, hi, 5, true, f.xyz, f.tris);
     box_front(ilo, ihi, 3, false, f.xyz, f.tris);
-    const TetDomain a = tets::recover_boundary(f.xyz, f.tris);
-    const TetDomain b = tets::recover_boundary(f.xyz, f.tris);
+    const TetDomain a = tets::recover_boundary(f.xyz, f.tris, Parallelism{});
+    const TetDomain b = tets::recover_boundary(f.xyz, f.tris, Parallelism{});
     EXPECT_EQ(a.xyz, b.xyz);
     ASSERT_EQ(a.tets.size(), b.tets.size());
     EXPECT_TRUE(std::equal(a.tets.vertices().begin(), a.tets.vertices().end(), b.tets.vertices().begin()));
@@ -242,7 +242,7 @@ TEST_P(TetsRecoveryFineHole, IsRecovered) {
     const Front f = cube_with_hole(outer, hole);
     ASSERT_NEAR(enclosed_volume(f), 1 - 0.3 * 0.3 * 0.3, 1e-12);
     RecoveryStats st;
-    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
+    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, &st);
     expect_valid_domain(f, d);
 }
 
@@ -265,7 +265,7 @@ TEST(TetsRecovery, FineHoleWithPointsMovedInTheirFaces) {
             f.xyz[i] += 0.1 * cell * std::sin(12.9898 * static_cast<double>(i) + 78.233);
         }
         RecoveryStats st;
-        const TetDomain d = tets::recover_boundary(f.xyz, f.tris, {}, &st);
+        const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, &st);
         expect_valid_domain(f, d);
     }
 }

@@ -81,9 +81,7 @@ TetDomain make_domain(const std::vector<double>& x, const std::vector<double>& y
 TetDomain box_domain() {
     std::vector<double> x, y, z;
     box_surface(1.0, 1.0, 1.0, 0.1, x, y, z);
-    delaunay::DelaunayOptions o;
-    o.threads = 1;
-    return make_domain(x, y, z, delaunay::delaunay(x, y, z, o).tets);
+    return make_domain(x, y, z, delaunay::delaunay(x, y, z, Parallelism{1, 1}).tets);
 }
 
 // An L: [0,2]x[0,1]x[0,1] plus [0,1]x[1,2]x[0,1]. The Delaunay of its surface points, minus the
@@ -101,9 +99,7 @@ TetDomain l_domain() {
             lx.push_back(1.0), ly.push_back(1.0 + j / 8.0), lz.push_back(k / 8.0);
             lx.push_back(1.0 + j / 8.0), ly.push_back(1.0), lz.push_back(k / 8.0);
         }
-    delaunay::DelaunayOptions o;
-    o.threads = 1;
-    delaunay::TetStore all = delaunay::delaunay(lx, ly, lz, o).tets;
+    delaunay::TetStore all = delaunay::delaunay(lx, ly, lz, Parallelism{1, 1}).tets;
     std::vector<index_t> keep_id(all.size(), kNoIndex);
     index_t kept = 0;
     for (index_t t = 0; t < all.size(); ++t) {
@@ -180,10 +176,10 @@ void check_refinement(TetDomain d, const char* name) {
     const index_t first_new = d.point_count();
     const ControlSpace cs(d);
     RefineOptions o;
-    o.threads = 2;
-    o.partitions = 2;
     o.min_points_per_part = 64;
-    const RefineStats s = refine_interior(d, cs, o);
+    const Parallelism par{2, 2};
+    const auto limit = limit_threads(par);
+    const RefineStats s = refine_interior(d, cs, par, o);
     ASSERT_GT(s.inserted, 0u);
     expect_valid(d, front);
     EXPECT_NEAR(domain_volume(d), v0, 1e-9 * v0);
@@ -227,10 +223,10 @@ TEST(Refine, DeterministicAcrossRunsAndThreads) {
         TetDomain d = l_domain();
         const ControlSpace cs(d);
         RefineOptions o;
-        o.threads = threads;
-        o.partitions = 2;
         o.min_points_per_part = 32;
-        refine_interior(d, cs, o);
+        const Parallelism par{threads, 2};
+        const auto limit = limit_threads(par);
+        refine_interior(d, cs, par, o);
         return d;
     };
     const TetDomain a = run(2), b = run(2), c = run(1);
@@ -586,11 +582,11 @@ TEST(FarLattice, FarPointsAreLatticeNodesAndRaiseTheMean) {
         TetDomain d = box_domain();
         const ControlSpace cs(d);
         RefineOptions o;
-        o.threads = 1;
-        o.partitions = 1;
         o.lattice_spacing = spacing;
         const index_t first_new = d.point_count();
-        const RefineStats s = refine_interior(d, cs, o);
+        const Parallelism par{1, 1};
+        const auto limit = limit_threads(par);
+        const RefineStats s = refine_interior(d, cs, par, o);
         const double a = 1.12 * cs.far_size();
         nodes = 0;
         inserted = static_cast<index_t>(s.inserted);

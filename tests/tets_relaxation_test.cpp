@@ -86,10 +86,8 @@ Refined refined_cube() {
     co.gradation = 1.6;
     const ControlSpace space(r.domain, co);
     RefineOptions fo;
-    fo.threads = 2;
-    fo.partitions = 2;
     fo.min_points_per_part = 64;
-    refine_interior(r.domain, space, fo, &r.sizes);
+    refine_interior(r.domain, space, Parallelism{2, 2}, fo, &r.sizes);
     return r;
 }
 
@@ -113,10 +111,7 @@ TEST(Relaxation, KeepsTheDomainAndRaisesTheMean) {
     const double before = mean_collapse(r.domain);
     const index_t points_before = r.domain.point_count();
 
-    RelaxationOptions o;
-    o.threads = 2;
-    o.partitions = 2;
-    const RelaxationStats s = relax_points(r.domain, r.recovered, r.sizes, o);
+    const RelaxationStats s = relax_points(r.domain, r.recovered, r.sizes, Parallelism{2, 2});
     const double after = mean_collapse(r.domain);
     std::printf("relaxation: %llu moves, %u second walks, %u dropped, mean collapse %.4f -> %.4f, %.3f s\n",
                 (unsigned long long)s.moves, s.second_walks, s.dropped, before, after, s.seconds);
@@ -135,10 +130,9 @@ TEST(Relaxation, KeepsTheDomainAndRaisesTheMean) {
 TEST(Relaxation, SameMeshForOneAndTwoThreads) {
     const auto run = [](unsigned threads) {
         Refined r = refined_cube();
-        RelaxationOptions o;
-        o.threads = threads;
-        o.partitions = 2;
-        relax_points(r.domain, r.recovered, r.sizes, o);
+        const Parallelism par{threads, 2};
+        const auto limit = limit_threads(par);
+        relax_points(r.domain, r.recovered, r.sizes, par);
         return std::move(r.domain);
     };
     const TetDomain a = run(2), b = run(1);
@@ -180,13 +174,13 @@ TEST(Relaxation, NoIterationsLeavesTheDomainAndBadInputThrows) {
     const std::vector<double> xyz = r.domain.xyz;
     RelaxationOptions o;
     o.iterations = 0;
-    EXPECT_EQ(relax_points(r.domain, r.recovered, r.sizes, o).moves, 0u);
+    EXPECT_EQ(relax_points(r.domain, r.recovered, r.sizes, Parallelism{}, o).moves, 0u);
     EXPECT_EQ(r.domain.xyz, xyz);
     o.iterations = -1;
-    EXPECT_THROW(relax_points(r.domain, r.recovered, r.sizes, o), Error);
+    EXPECT_THROW(relax_points(r.domain, r.recovered, r.sizes, Parallelism{}, o), Error);
     o.iterations = 1;
     const std::vector<double> short_sizes(r.sizes.begin(), r.sizes.end() - 1);
-    EXPECT_THROW(relax_points(r.domain, r.recovered, short_sizes, o), Error);
+    EXPECT_THROW(relax_points(r.domain, r.recovered, short_sizes, Parallelism{}, o), Error);
 }
 
 }  // namespace

@@ -5,9 +5,6 @@
 #include <cmath>
 #include <string>
 
-#include <tbb/info.h>
-#include <tbb/task_arena.h>
-
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
@@ -21,7 +18,7 @@ constexpr double kTetsPerPoint = 7.1;
 }  // namespace
 
 DelaunayResult delaunay(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                        const DelaunayOptions& options) {
+                        const Parallelism& par, const DelaunayOptions& options) {
     const auto t_start = Clock::now();
     if (x.size() != y.size() || x.size() != z.size())
         throw Error("Delaunay: x, y and z hold " + std::to_string(x.size()) + ", " + std::to_string(y.size()) +
@@ -32,15 +29,14 @@ DelaunayResult delaunay(std::span<const double> x, std::span<const double> y, st
         if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i]))
             throw Error("Delaunay: point " + std::to_string(i) + " has a NaN or infinite coordinate");
 
-    const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
-    const unsigned parts = options.partitions ? options.partitions : threads;
+    if (par.parts == 0) throw Error("Delaunay: the part count must be at least 1");
+    const unsigned parts = par.parts;
     DelaunayResult result;
     result.stats.points = static_cast<index_t>(n);
-    result.stats.threads = threads;
+    result.stats.threads = par.threads;
     result.stats.partitions = parts;
 
-    tbb::task_arena arena(static_cast<int>(threads));
-    arena.execute([&] {
+    {
         InsertionOrder order = brio_hilbert_order(x, y, z);
         Triangulation tri;
         tri.reserve_points(n + 8);
@@ -127,7 +123,7 @@ DelaunayResult delaunay(std::span<const double> x, std::span<const double> y, st
         result.stats.seconds_passes = c.seconds_passes;
         result.stats.seconds_serial = c.seconds_serial;
         result.stats.peak_bytes = tri.peak_bytes();
-    });
+    }
     result.stats.tets = result.tets.size();
     result.stats.duplicates = static_cast<index_t>(result.duplicates.size());
     result.stats.bytes_per_tet =

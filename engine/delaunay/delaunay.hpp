@@ -9,20 +9,13 @@
 #include <utility>
 #include <vector>
 
+#include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
 #include "engine/delaunay/tet_store.hpp"
 
 namespace tubemesh::delaunay {
 
 struct DelaunayOptions {
-    // Worker threads; 0 = oneTBB's default (all cores).
-    unsigned threads = 0;
-    // Spatial parts per parallel pass; 0 = one per thread. The result is a function of the
-    // input and the part count only: the same input and part count give the same tets in the
-    // same order, whatever the thread count and timing (there is no faster non-deterministic
-    // mode: parts never race, so determinism costs nothing). Fix it (e.g. 2) to get identical
-    // output on machines with different core counts.
-    unsigned partitions = 0;
     // Passes with fewer points than this per part run serially (a pass has a fixed cost:
     // quantiles, start tets, postponed points near the cuts).
     index_t min_points_per_part = 1024;
@@ -74,7 +67,10 @@ struct DelaunayResult {
 
 // Throws tubemesh::Error when the coordinate arrays differ in length or hold a NaN or an
 // infinity. Fewer than four affinely independent points give no tets (and no error).
+// Runs in the caller's oneTBB arena (limit_threads sets its size), with par.parts spatial parts
+// per parallel pass: the same input and part count give the same tets in the same order,
+// whatever the thread count and timing (parts never race, so determinism costs nothing).
 DelaunayResult delaunay(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                        const DelaunayOptions& options = {});
+                        const Parallelism& par, const DelaunayOptions& options = {});
 
 }  // namespace tubemesh::delaunay

@@ -118,8 +118,7 @@ public:
 
     // Inserts the points (kernel ids, in insertion order) with `parts` spatial parts per
     // parallel pass; passes with fewer than `min_points_per_part` points per part, and the
-    // last stragglers, are inserted serially. Must run inside the task_arena that sets the
-    // thread count. Duplicates are appended to duplicates() as {kernel id, kernel id kept}.
+    // last stragglers, are inserted serially. Runs in the caller's oneTBB arena. Duplicates are appended to duplicates() as {kernel id, kernel id kept}.
     void insert(std::span<const index_t> points, unsigned parts, index_t min_points_per_part);
 
     // Removes ghost and free slots (hull faces get kNoAdjacent), maps vertices and

@@ -11,7 +11,7 @@
 #include <unordered_map>
 
 #include "engine/check/mesh_check.hpp"
-#include "engine/pipeline/thread_limit.hpp"
+#include "engine/core/parallelism.hpp"
 
 namespace tubemesh {
 
@@ -113,12 +113,11 @@ void run_solid_pyramids(SolidWork& w, const MeshOptions& opt) {
     w.pyramid_seconds = seconds_since(t0);
 }
 
-void run_solid_tets(SolidWork& w, const MeshOptions& opt, double far_size) {
+void run_solid_tets(SolidWork& w, const MeshOptions& opt, const Parallelism& par, double far_size) {
     const auto t0 = Clock::now();
     tets::TetStepOptions to = opt.tets;
     to.far_size = far_size;
-    to.threads = 0;
-    w.tet_stats = tets::build_tets(w.mesh, w.tet_front, 0, to);
+    w.tet_stats = tets::build_tets(w.mesh, w.tet_front, 0, par, to);
     w.tet_seconds = seconds_since(t0);
 }
 
@@ -262,7 +261,8 @@ void drop_empty_groups(HybridMesh& mesh) {
 }  // namespace
 
 AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& options) {
-    const auto threads = limit_threads(options.threads);
+    const Parallelism par = run_parallelism(options);
+    const auto limit = limit_threads(par);
     AssemblyResult out;
     PipelineResult& r = out.result;
     r = run_pipeline(input.whole, options, Stage::Surface);
@@ -283,7 +283,7 @@ AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& optio
     t0 = Clock::now();
     {
         PhaseProgress progress(options.progress, "tets", work.size());
-        for_each_solid(work, input, progress, [&](SolidWork& w) { run_solid_tets(w, options, far_size); });
+        for_each_solid(work, input, progress, [&](SolidWork& w) { run_solid_tets(w, options, par, far_size); });
         progress.finish();
     }
     PhaseReport tets{"tets", seconds_since(t0), {}, {}};

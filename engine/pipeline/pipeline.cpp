@@ -11,7 +11,7 @@
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
-#include "engine/pipeline/thread_limit.hpp"
+#include "engine/core/parallelism.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
 
 namespace tubemesh {
@@ -234,14 +234,13 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
     out.phases.push_back(std::move(r));
 }
 
-void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
+void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism& par, PipelineResult& out) {
     const auto t0 = Clock::now();
     PhaseProgress progress(opt.progress, "tets", 3);  // recovery, refinement + relaxation, optimisation
     tets::TetStepOptions to = opt.tets;
     to.far_size = tet_far_size(in, opt);
-    to.threads = 0;  // the run's oneTBB limit, already capped at the cores (thread_limit.hpp)
     to.part_done = [&progress] { progress.advance(); };
-    out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), to);
+    out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), par, to);
     const tets::TetStepStats& s = out.tet_stats;
     PhaseReport r{"tets", seconds_since(t0), {}};
     // Recovered: front edges / triangles the Delaunay tets of the front's points lacked, all
@@ -284,7 +283,8 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, PipelineResult& o
     out.phases.push_back(std::move(r));
 }
 
-void run_phases(const PipelineInput& input, const MeshOptions& options, Stage until, PipelineResult& out) {
+void run_phases(const PipelineInput& input, const MeshOptions& options, const Parallelism& par, Stage until,
+                PipelineResult& out) {
     run_sweep(input, options, out);
     out.reached = Stage::Sweep;
     if (until == Stage::Sweep) return;
@@ -294,17 +294,22 @@ void run_phases(const PipelineInput& input, const MeshOptions& options, Stage un
     run_pyramids(options, out);
     out.reached = Stage::Pyramids;
     if (until == Stage::Pyramids) return;
-    run_tets(input, options, out);
+    run_tets(input, options, par, out);
     out.reached = Stage::Tets;
 }
 
 }  // namespace
 
+Parallelism run_parallelism(const MeshOptions& options) {
+    return resolve_parallelism(options.threads, options.tet_parts);
+}
+
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options, Stage until) {
-    const auto threads = limit_threads(options.threads);
+    const Parallelism par = run_parallelism(options);
+    const auto limit = limit_threads(par);
 
     PipelineResult out;
-    run_phases(input, options, until, out);
+    run_phases(input, options, par, until, out);
     out.quality = summarize_quality(out.mesh);
     for (const PhaseReport& p : out.phases) out.seconds += p.seconds;
     if (options.check) check_result(out, options.progress);

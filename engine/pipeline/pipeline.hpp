@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "engine/check/mesh_check.hpp"
+#include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
 #include "engine/geometry/tube_data.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
@@ -103,20 +104,26 @@ struct MeshOptions {
     // rounds, quality floor 0.45).
     PyramidOptions pyramids;
     // Tet step options (engine/tets/tet_step.hpp and the headers it names: gradation 1.6,
-    // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5, 2 Delaunay parts).
-    // far_size = 0 (the default) takes S; threads come from the field below.
+    // size tolerance 1.3, 8 optimisation passes, flip threshold 0.5).
+    // far_size = 0 (the default) takes S.
     tets::TetStepOptions tets;
-    // oneTBB worker threads for the whole run, capped at the usable cores
-    // (engine/pipeline/thread_limit.hpp); 0 (default) lets oneTBB choose (all cores).
+    // oneTBB worker threads for the whole run, capped at the usable cores; 0 (default): all
+    // cores. With tet_parts, resolved once at the run's entry (engine/core/parallelism.hpp).
     int threads = 0;
+    // Spatial parts of the tet step's parallel Delaunay passes (recovery's kernel run,
+    // refinement, relaxation). Default 2: cheap at 1 and 2 threads, and the quality bars checked
+    // at one thread count then hold at all (bench/results/tuning-notes.md). 0 = one part per
+    // thread (more parallel work on machines with more cores; the mesh then depends on the
+    // thread count).
+    unsigned tet_parts = 2;
     // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
     // from the solid's volume and area, S, St and the tubes' length (geom/sizing/element_budget.hpp).
     // 0 (default): what this machine's memory holds (at 150 bytes per element).
     double max_elements = 0;
     // Determinism: the same input and options always give the same mesh, byte for byte, for
     // any thread count (the sweep, surface and pyramid phases by construction, the tet step
-    // because its Delaunay passes split into tets.partitions parts whatever the thread count;
-    // tets.partitions = 0 trades this for one part per thread). There is no faster
+    // because its Delaunay passes split into tet_parts parts whatever the thread count;
+    // tet_parts = 0 trades this for one part per thread). There is no faster
     // timing-dependent mode.
     // Run the validity and conformity check (engine/pipeline/stage_check.hpp) as run_pipeline's
     // last stage, so every caller gets a checked mesh; it throws when the mesh fails. Default true.
@@ -188,5 +195,9 @@ struct PipelineResult {
 // pyramids front quads (start and end of each phase: the modules run as one call each).
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options = {},
                             Stage until = kLastStage);
+
+// The run's parallelism from options.threads and options.tet_parts (resolve_parallelism): what
+// run_pipeline and the callers that do work before it (import, tube search) limit oneTBB to.
+Parallelism run_parallelism(const MeshOptions& options);
 
 }  // namespace tubemesh

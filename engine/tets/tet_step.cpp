@@ -1,24 +1,18 @@
 #include "engine/tets/tet_step.hpp"
 
-#include <tbb/global_control.h>
-
 #include <vector>
 
 #include "engine/core/timing.hpp"
 
 namespace tubemesh::tets {
 
-TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region,
+TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region, const Parallelism& par,
                         const TetStepOptions& options) {
     const auto t0 = Clock::now();
     TetStepStats stats;
     if (front.empty() || front.size() % 3 != 0) throw Error("tet step: the front is empty or not made of triangles");
-    const unsigned threads =
-        options.threads ? options.threads
-                        : static_cast<unsigned>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-    const unsigned parts = options.partitions ? options.partitions : threads;
-    stats.threads = threads;
-    stats.partitions = parts;
+    stats.threads = par.threads;
+    stats.partitions = par.parts;
     stats.front_triangles = static_cast<index_t>(front.size() / 3);
 
     // Compact the front's nodes to domain ids 0..k-1 in order of first use (deterministic).
@@ -38,10 +32,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         local.push_back(to_domain[v]);
     }
 
-    RecoveryOptions ro = options.recovery;
-    ro.threads = threads;
-    ro.partitions = parts;
-    TetDomain domain = recover_boundary(xyz, local, ro, &stats.recovery);
+    TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery);
     // The relaxation inserts the interior points again into this mesh.
     TetDomain recovered;
     if (options.relaxation.iterations > 0) recovered = copy_of(domain);
@@ -52,23 +43,16 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     co.gradation = options.gradation;
     const ControlSpace space(domain, co);
 
-    RefineOptions fo = options.refine;
-    fo.threads = threads;
-    fo.partitions = parts;
     std::vector<double> sizes;
-    stats.refine = refine_interior(domain, space, fo, options.relaxation.iterations > 0 ? &sizes : nullptr);
+    stats.refine =
+        refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr);
     if (options.relaxation.iterations > 0) {
-        RelaxationOptions xo = options.relaxation;
-        xo.threads = threads;
-        xo.partitions = parts;
-        stats.relaxation = relax_points(domain, recovered, sizes, xo);
+        stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation);
         recovered = TetDomain();
     }
     if (options.part_done) options.part_done();  // refinement and relaxation
 
-    OptimiseOptions oo = options.optimise;
-    oo.threads = threads;
-    stats.optimise = optimise(domain, oo);
+    stats.optimise = optimise(domain, options.optimise);
     if (options.part_done) options.part_done();
 
     // Append: points after the front's become new mesh points, in domain order.

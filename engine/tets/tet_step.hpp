@@ -13,6 +13,7 @@
 #include <functional>
 #include <span>
 
+#include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/tets/recovery/boundary_recovery.hpp"
@@ -31,19 +32,10 @@ struct TetStepOptions {
     // most tets of a hybrid mesh sit in the transition from the rings' small quads to S, so the
     // gradation sets the element count (bench/results/tuning-notes.md has the trade-off).
     double gradation = 1.6;
-    // Worker threads of every part; 0 = the current oneTBB limit (global_control), so the
-    // pipeline's --threads applies.
-    unsigned threads = 0;
-    // Spatial parts of the parallel Delaunay passes (recovery's kernel run and refinement).
-    // The mesh depends on the input and this count only, so with a fixed count it is the same
-    // for any thread count. Default 2: cheap at 1 and 2 threads, and the quality bars checked at
-    // one thread count then hold at all (bench/results/tuning-notes.md). 0 = one part per thread
-    // (more parallel work on machines with more cores; the mesh then depends on the thread count).
-    unsigned partitions = 2;
-    RecoveryOptions recovery;  // threads/partitions are overridden by the two fields above
-    RefineOptions refine;      // likewise
-    RelaxationOptions relaxation;  // likewise
-    OptimiseOptions optimise;  // likewise for threads
+    RecoveryOptions recovery;
+    RefineOptions refine;
+    RelaxationOptions relaxation;
+    OptimiseOptions optimise;
     // Called after each of the three parts (recovery, refinement with the relaxation,
     // optimisation), for progress reports; may be empty. The mesh does not depend on it.
     std::function<void()> part_done;
@@ -63,8 +55,10 @@ struct TetStepStats {
 
 // Appends the tets (region `region`) and their new points to `mesh`. `front`: 3 mesh node ids
 // per triangle, normal out of the region. Throws tubemesh::Error (mesh unchanged) when the
-// front is not a closed, oriented, non-self-intersecting surface or recovery fails.
-TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region,
+// front is not a closed, oriented, non-self-intersecting surface or recovery fails. Every part
+// runs in the caller's oneTBB arena, its Delaunay passes with par.parts parts: the mesh depends
+// on the input and that count only.
+TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region, const Parallelism& par,
                         const TetStepOptions& options = {});
 
 }  // namespace tubemesh::tets

@@ -13,7 +13,6 @@
 
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/mesh/vec3_ops.hpp"
-#include "engine/pipeline/thread_limit.hpp"
 #include "geom/assembly/assembly_occt.hpp"
 #include "geom/describe_groups.hpp"
 #include "geom/model_occt.hpp"
@@ -210,7 +209,7 @@ void share_joint_rings(std::vector<TubeData>& tubes, const std::vector<RingJoin>
 }  // namespace
 
 AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
-    const auto limit = limit_threads(options.threads);
+    const auto limit = limit_threads(run_parallelism(options));
     const std::vector<AssemblySolid>& solids = a.solids();
     std::vector<PreparedModel> prepared = prepare_solids(a, options);
     const std::vector<RingJoin> joins = find_ring_joins(a, prepared);
@@ -296,7 +295,7 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
 }
 
 AssemblyRun mesh_assembly_file(const std::string& path, const MeshOptions& options, const AssemblyOptions& assembly) {
-    const auto limit = limit_threads(options.threads);
+    const auto limit = limit_threads(run_parallelism(options));
     const auto t0 = Clock::now();
     PhaseProgress progress(options.progress, "import", 1);
     const Assembly a = import_assembly(path, assembly);

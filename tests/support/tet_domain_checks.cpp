@@ -69,10 +69,7 @@ tets::TetDomain recovered_cube_with_hole(int hole_cells) {
     std::vector<index_t> front;
     cube_front(0.0, 1.0, 10, true, xyz, front);
     cube_front(0.35, 0.65, hole_cells, false, xyz, front);
-    tets::RecoveryOptions ro;
-    ro.threads = 2;
-    ro.partitions = 2;
-    return tets::recover_boundary(xyz, front, ro);
+    return tets::recover_boundary(xyz, front, Parallelism{2, 2});
 }
 
 void expect_valid(const tets::TetDomain& d, const std::vector<index_t>& front) {

@@ -59,7 +59,7 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     o.sweep.axial_aspect = s.axial_aspect;
     o.pyramids.height_factor = s.pyramid_height;
     o.tets.gradation = s.gradation;
-    o.tets.partitions = static_cast<unsigned>(s.tet_parts);
+    o.tet_parts = static_cast<unsigned>(s.tet_parts);
     o.tets.relaxation.iterations = s.tet_relax;
     o.threads = s.threads.value_or(0);
     o.max_elements = s.max_elements.value_or(0);

@@ -23,7 +23,7 @@ struct MeshSettings {
     double pyramid_height = default_mesh_options().pyramids.height_factor;
     double gradation = default_mesh_options().tets.gradation;
     std::optional<int> threads;             // automatic: all cores
-    int tet_parts = static_cast<int>(default_mesh_options().tets.partitions);
+    int tet_parts = static_cast<int>(default_mesh_options().tet_parts);
     int tet_relax = default_mesh_options().tets.relaxation.iterations;
     std::optional<double> max_elements;     // automatic: what this machine's memory holds
     std::optional<int> solid;               // which solid of the file, 1-based; automatic: the only one

@@ -8,7 +8,6 @@
 #include <vector>
 
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "engine/core/timing.hpp"
 #include "engine/tets/optimise/flip_pass.hpp"
@@ -211,9 +210,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
 
 OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options) {
     check(options);
-    if (options.threads == 0) return run(domain, options);
-    tbb::task_arena arena(static_cast<int>(options.threads));
-    return arena.execute([&] { return run(domain, options); });
+    return run(domain, options);
 }
 
 }  // namespace tubemesh::tets

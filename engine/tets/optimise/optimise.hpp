@@ -57,9 +57,6 @@ struct OptimiseOptions {
     // minimum the tet step aims for: the worst tets of the paper examples have four front
     // points, so no move reaches them and no single flip lifts them. 0: off.
     double rescue_below = 0.32;
-    // Worker threads; 0 = the caller's oneTBB arena (its global_control limit applies). The
-    // result is the same for every value.
-    unsigned threads = 0;
 };
 
 struct OptimiseStats {
@@ -78,6 +75,7 @@ struct OptimiseStats {
 };
 
 // Throws tubemesh::Error on options out of range; a domain with free slots is compacted first.
+// Runs in the caller's oneTBB arena; the result is the same for any thread count.
 OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options = {});
 
 }  // namespace tubemesh::tets

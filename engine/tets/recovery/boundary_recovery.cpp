@@ -9,7 +9,6 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
-#include <tbb/task_arena.h>
 
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/delaunay.hpp"
@@ -259,10 +258,8 @@ private:
 
 }  // namespace
 
-namespace {
-
-TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, const RecoveryOptions& options,
-                  RecoveryStats* stats_out) {
+TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front, const Parallelism& par,
+                           const RecoveryOptions& options, RecoveryStats* stats_out) {
     const auto t_start = Clock::now();
     RecoveryStats st;
     if (options.max_ring < 3 || options.max_ring > kMaxRecoveryRing)
@@ -291,11 +288,9 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
     st.front_points = static_cast<index_t>(ids.size());
     st.unused_points = n - st.front_points;
     delaunay::DelaunayOptions dopt;
-    dopt.threads = options.threads;
-    dopt.partitions = options.partitions;
     dopt.bounding_box = true;
     dopt.box_margin = options.box_margin;
-    delaunay::DelaunayResult del = delaunay::delaunay(x, y, z, dopt);
+    delaunay::DelaunayResult del = delaunay::delaunay(x, y, z, par, dopt);
     if (!del.duplicates.empty())
         throw Error("tet front: points " + std::to_string(ids[del.duplicates[0].first]) + " and " +
                     std::to_string(ids[del.duplicates[0].second]) + " have the same coordinates");
@@ -424,15 +419,6 @@ TetDomain recover(std::span<const double> xyz, std::span<const index_t> front, c
     st.seconds_total = seconds_since(t_start);
     if (stats_out) *stats_out = st;
     return out;
-}
-
-}  // namespace
-
-TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front,
-                           const RecoveryOptions& options, RecoveryStats* stats) {
-    if (options.threads == 0) return recover(xyz, front, options, stats);
-    tbb::task_arena arena(static_cast<int>(options.threads));
-    return arena.execute([&] { return recover(xyz, front, options, stats); });
 }
 
 }  // namespace tubemesh::tets

@@ -18,19 +18,13 @@
 #include <cstdint>
 #include <span>
 
+#include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
 #include "engine/tets/tet_domain.hpp"
 
 namespace tubemesh::tets {
 
 struct RecoveryOptions {
-    // Threads of the Delaunay kernel and of recovery's parallel loops (front checks, which
-    // front elements are present, the tets beside the front); 0 = the caller's oneTBB arena. The
-    // flips and Steiner points are serial.
-    unsigned threads = 0;
-    // Spatial parts of the Delaunay kernel (DelaunayOptions::partitions); 0 = one per thread.
-    // The result depends on the input and this count only.
-    unsigned partitions = 0;
     // Box around the points, grown by this fraction of their bounding box diagonal per side.
     double box_margin = 0.1;
     // Largest ring (tets around an edge) an edge-removal flip tries (O(n^3) per try), 3 to
@@ -75,7 +69,10 @@ struct RecoveryStats {
 // Throws tubemesh::Error for an open, non-manifold or inconsistently oriented front, for points
 // with equal coordinates, for a self-intersecting front (front elements crossing, a front
 // point on a front edge or triangle), for a front oriented inwards, and when recovery fails.
-TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front,
+// The Delaunay kernel runs with par.parts parts (the result depends on the input and that count
+// only); it and recovery's parallel loops (front checks, which front elements are present, the
+// tets beside the front) run in the caller's oneTBB arena; the flips and Steiner points are serial.
+TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front, const Parallelism& par,
                            const RecoveryOptions& options = {}, RecoveryStats* stats = nullptr);
 
 }  // namespace tubemesh::tets

@@ -4,9 +4,7 @@
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
@@ -140,7 +138,7 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
 }  // namespace
 
 RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
-                             const RelaxationOptions& options) {
+                             const Parallelism& par, const RelaxationOptions& options) {
     const auto t0 = Clock::now();
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
@@ -149,16 +147,11 @@ RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std:
         throw Error("relaxation: the recovered mesh is not the start of the domain");
     RelaxationStats stats;
     if (options.iterations == 0) return stats;
-    const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
-    const unsigned parts = options.partitions ? options.partitions : threads;
-    tbb::task_arena arena(static_cast<int>(threads));
-    arena.execute([&] {
-        for (int it = 0; it < options.iterations; ++it) {
-            ++stats.iterations;
-            stats.moves += move_points(domain, fixed, sizes);
-            stats.second_walks += reinsert(domain, recovered, parts);
-        }
-    });
+    for (int it = 0; it < options.iterations; ++it) {
+        ++stats.iterations;
+        stats.moves += move_points(domain, fixed, sizes);
+        stats.second_walks += reinsert(domain, recovered, par.parts);
+    }
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither
     // moves nor is inserted again); remove them all.
     const index_t before = domain.point_count();

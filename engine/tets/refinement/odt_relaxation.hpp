@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <span>
 
+#include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
 #include "engine/tets/tet_domain.hpp"
 
@@ -27,11 +28,6 @@ struct RelaxationOptions {
     // Move-and-reinsert rounds; 0 = none. Default 2: a third raises the mean collapse little
     // for more time (bench/results/tuning-notes.md).
     int iterations = 2;
-    // Worker threads; 0 = the caller's oneTBB arena.
-    unsigned threads = 0;
-    // Spatial parts of the kernel's parallel passes (DelaunayOptions::partitions); 0 = one per
-    // thread. The result depends on the input and this count only.
-    unsigned partitions = 0;
 };
 
 struct RelaxationStats {
@@ -50,7 +46,9 @@ struct RelaxationStats {
 // `domain` keeps its invariants (tet_domain.hpp); the points the kernel skips on reinsertion
 // (none on the reference meshes or the test cube) are removed and the later ids moved
 // down, in order.
+// The kernel inserts with par.parts parts, in the caller's oneTBB arena: the result depends on
+// the input and that count only.
 RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
-                             const RelaxationOptions& options = {});
+                             const Parallelism& par, const RelaxationOptions& options = {});
 
 }  // namespace tubemesh::tets

@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <numeric>
 
-#include <tbb/info.h>
-#include <tbb/task_arena.h>
-
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
@@ -13,21 +10,16 @@
 #include "engine/tets/refinement/interior_points.hpp"
 
 namespace tubemesh::tets {
-namespace {
 
-}  // namespace
-
-RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options,
-                            std::vector<double>* sizes_out) {
+RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
+                            const RefineOptions& options, std::vector<double>* sizes_out) {
     const auto t0 = Clock::now();
     if (domain.tets.size() == 0) throw Error("refinement: the tet domain has no tetrahedra");
-    const unsigned threads = options.threads ? options.threads : static_cast<unsigned>(tbb::info::default_concurrency());
-    const unsigned parts = options.partitions ? options.partitions : threads;
+    const unsigned parts = par.parts;
     RefineStats stats;
     const index_t first_new = domain.point_count();
 
-    tbb::task_arena arena(static_cast<int>(threads));
-    arena.execute([&] {
+    {
         delaunay::Triangulation tri;
         tri.adopt(domain.xyz, std::move(domain.tets));
         domain.tets = delaunay::TetStore();
@@ -100,7 +92,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 if (to[v] != kNoIndex) (*sizes_out)[to[v]] = sizes[v];
         }
         stats.inserted = next - first_new;
-    });
+    }
     stats.tets = domain.tets.size();
     stats.seconds = seconds_since(t0);
     return stats;

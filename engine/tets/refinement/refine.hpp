@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
 #include "engine/tets/tet_domain.hpp"
 
@@ -25,11 +26,6 @@ struct RefineOptions {
     // the far field's mean collapse rises for few more elements (bench/results/tuning-notes.md).
     double lattice_spacing = 1.12;
     double lattice_clearance = 0.85;
-    // Worker threads; 0 = oneTBB's default.
-    unsigned threads = 0;
-    // Kernel parts per parallel pass; 0 = one per thread. Same input and part count give the
-    // same mesh whatever the thread count.
-    unsigned partitions = 0;
     // Kernel passes with fewer points per part run serially; 256.
     index_t min_points_per_part = 256;
     // Upper bound on rounds (each adds a layer of points); 200.
@@ -56,7 +52,9 @@ struct RefineStats {
 // all tets positive, no free slots. Throws tubemesh::Error on an empty domain.
 // With `sizes`, also the target size h at every point of the result by id (the control space's
 // at the points there before, each inserted point's from its candidate), for the relaxation.
-RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const RefineOptions& options = {},
-                            std::vector<double>* sizes = nullptr);
+// The kernel inserts with par.parts parts, in the caller's oneTBB arena: the same input and part
+// count give the same mesh whatever the thread count.
+RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
+                            const RefineOptions& options = {}, std::vector<double>* sizes = nullptr);
 
 }  // namespace tubemesh::tets

@@ -200,10 +200,9 @@ void apply_flip_appending(TetDomain& dom, const FlipPlan& plan) {
 }
 
 void compact_tets(TetDomain& dom, std::vector<double>* per_slot) {
-    const delaunay::TetStore& store = dom.tets;
+    delaunay::TetStore& store = dom.tets;
     const index_t n = store.size();
-    // Fixed chunks: each counts its live tets, the prefix sums say where its first one goes,
-    // and each writes its tets into a new store; any split gives the same arrays.
+    // Fixed chunks count their live tets in parallel; the prefix sums give every tet its new id.
     constexpr index_t kChunk = 16384;
     const index_t chunks = (n + kChunk - 1) / kChunk;
     const auto begin = [&](index_t c) { return std::min(n, c * kChunk); };
@@ -222,24 +221,20 @@ void compact_tets(TetDomain& dom, std::vector<double>* per_slot) {
         for (index_t t = begin(c); t < begin(c + 1); ++t)
             if (store.vertex(t)[0] != kFreeSlot) renumber[t] = to++;
     });
-    delaunay::TetStore out;
-    out.reserve(live);
-    out.set_size(live);
-    std::vector<double> slot_values(per_slot ? live : 0);
-    tbb::parallel_for(index_t{0}, chunks, [&](index_t c) {
-        for (index_t t = begin(c); t < begin(c + 1); ++t) {
-            const index_t to = renumber[t];
-            if (to == kNoIndex) continue;
-            for (index_t f = 0; f < 4; ++f) {
-                const index_t code = store.neighbour(4 * t + f);
-                out.vertex(to)[f] = store.vertex(t)[f];
-                out.neighbour(4 * to + f) = code == kNoAdjacent ? kNoAdjacent : 4 * renumber[code >> 2] + (code & 3);
-            }
-            if (per_slot) slot_values[to] = (*per_slot)[t];
+    // In place, in increasing order: a tet's new slot is never above its old one, so no row is
+    // overwritten before it moves (no second store at the peak of the optimisation).
+    for (index_t t = 0; t < n; ++t) {
+        const index_t to = renumber[t];
+        if (to == kNoIndex) continue;
+        for (index_t f = 0; f < 4; ++f) {
+            const index_t code = store.neighbour(4 * t + f);
+            store.vertex(to)[f] = store.vertex(t)[f];
+            store.neighbour(4 * to + f) = code == kNoAdjacent ? kNoAdjacent : 4 * renumber[code >> 2] + (code & 3);
         }
-    });
-    dom.tets = std::move(out);
-    if (per_slot) per_slot->swap(slot_values);
+        if (per_slot) (*per_slot)[to] = (*per_slot)[t];
+    }
+    store.set_size(live);
+    if (per_slot) per_slot->resize(live);
 }
 
 }  // namespace tubemesh::tets

@@ -90,7 +90,8 @@ int apply_flip(TetDomain& dom, const FlipPlan& plan, std::span<const index_t> sp
 void apply_flip_appending(TetDomain& dom, const FlipPlan& plan);
 
 // Removes free slots: live tets keep their relative order, neighbour codes are renumbered.
-// `per_slot` (optional, one value per slot): compacted alike. Parallel.
+// `per_slot` (optional, one value per slot): compacted alike. In place (the live tets counted in
+// parallel), so the optimisation never holds two stores.
 void compact_tets(TetDomain& dom, std::vector<double>* per_slot = nullptr);
 
 }  // namespace tubemesh::tets

@@ -1,0 +1,9 @@
+#include "tools/run/process_memory.hpp"
+
+#include <malloc.h>
+
+namespace tubemesh::run {
+
+void return_large_blocks_when_freed() { mallopt(M_MMAP_THRESHOLD, 1 << 20); }
+
+}  // namespace tubemesh::run

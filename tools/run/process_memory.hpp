@@ -1,0 +1,12 @@
+#pragma once
+// How a meshing process gives memory back. glibc serves a freed large block's next request
+// from the heap once its mmap threshold has risen past it (it adapts upwards on every free of
+// an mmapped block), so the temporaries of one phase stay resident under the next phase's:
+// the resident peak of a run then counts them twice. Fixing the threshold at 1 MiB makes every
+// large block its own mapping, returned to the system when freed.
+namespace tubemesh::run {
+
+// For a program's main, before any work: the whole process is affected.
+void return_large_blocks_when_freed();
+
+}  // namespace tubemesh::run

@@ -11,6 +11,10 @@ TetDomain copy_of(const TetDomain& d) {
     c.front_points = d.front_points;
     c.tets = d.tets.clone();
     c.front = d.front;
+    c.apex_rank = d.apex_rank;
+    c.apex_at = d.apex_at;
+    c.apex_bases = d.apex_bases;
+    c.apex_floor = d.apex_floor;
     return c;
 }
 

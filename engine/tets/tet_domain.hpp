@@ -17,6 +17,7 @@
 //
 // Every phase keeps the invariants above, so any phase can be tested on its own on a domain
 // built by delaunay() of points in a box (the hull faces are then the front).
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -30,6 +31,17 @@ struct TetDomain {
     index_t front_points = 0;
     delaunay::TetStore tets;
     std::vector<index_t> front;
+    // Front points the optimisation's smoothing may move as well (tet_step.hpp, move_apexes):
+    // pyramid apexes that no hex, boundary face or pyramid base holds. apex_rank[p] (p below
+    // front_points) is kNoIndex for a point that stays, else k: its pyramids' base quads (4
+    // point ids each, the mesh's order) are apex_bases[apex_at[k] .. apex_at[k + 1]), and a move
+    // keeps each of them at a scaled Jacobian of at least apex_floor. Empty: no front point moves.
+    std::vector<index_t> apex_rank, apex_at;
+    std::vector<std::array<index_t, 4>> apex_bases;
+    double apex_floor = 0.5;
+
+    // True for a point the smoothing may move.
+    bool movable(index_t p) const { return p >= front_points || (!apex_rank.empty() && apex_rank[p] != kNoIndex); }
 
     index_t point_count() const { return static_cast<index_t>(xyz.size() / 3); }
     const double* point(index_t p) const { return xyz.data() + std::size_t{3} * p; }

@@ -1,10 +1,47 @@
 #include "engine/tets/tet_step.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "engine/core/timing.hpp"
 
 namespace tubemesh::tets {
+namespace {
+
+// The pyramid apexes that only pyramids (as apex) and tets hold, for the smoothing to move.
+void mark_movable_apexes(const HybridMesh& mesh, const std::vector<index_t>& to_domain, double floor, TetDomain& dom) {
+    if (!(floor > 0 && floor <= 1)) throw Error("tet step: the apexes' pyramid floor must lie in (0, 1]");
+    std::vector<std::uint8_t> held(mesh.point_count(), 0);
+    for (index_t v : mesh.block(CellKind::Hex).nodes) held[v] = 1;
+    for (const FaceBlock& b : mesh.faces)
+        for (index_t v : b.nodes) held[v] = 1;
+    const std::vector<index_t>& pyramids = mesh.block(CellKind::Pyramid).nodes;
+    for (std::size_t c = 0; c + 4 < pyramids.size(); c += 5)
+        for (int k = 0; k < 4; ++k) held[pyramids[c + k]] = 1;
+    std::vector<std::vector<std::array<index_t, 4>>> bases(dom.front_points);
+    for (std::size_t c = 0; c + 4 < pyramids.size(); c += 5) {
+        const index_t apex = pyramids[c + 4];
+        if (held[apex] || to_domain[apex] == kNoIndex) continue;
+        std::array<index_t, 4> base;
+        for (int k = 0; k < 4; ++k) base[k] = to_domain[pyramids[c + k]];
+        // The base corners are nodes of the pyramid's side triangles, so front points.
+        if (std::find(base.begin(), base.end(), kNoIndex) == base.end()) bases[to_domain[apex]].push_back(base);
+    }
+    dom.apex_rank.assign(dom.front_points, kNoIndex);
+    dom.apex_at = {0};
+    dom.apex_bases.clear();
+    dom.apex_floor = floor;
+    for (index_t p = 0; p < dom.front_points; ++p) {
+        if (bases[p].empty()) continue;
+        dom.apex_rank[p] = static_cast<index_t>(dom.apex_at.size() - 1);
+        dom.apex_bases.insert(dom.apex_bases.end(), bases[p].begin(), bases[p].end());
+        dom.apex_at.push_back(static_cast<index_t>(dom.apex_bases.size()));
+    }
+}
+
+}  // namespace
 
 TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region, const Parallelism& par,
                         const TetStepOptions& options) {
@@ -33,6 +70,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     }
 
     TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery);
+    if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
     // The relaxation inserts the interior points again into this mesh.
     TetDomain recovered;
     if (options.relaxation.iterations > 0) recovered = copy_of(domain);
@@ -55,6 +93,14 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     stats.optimise = optimise(domain, options.optimise);
     if (options.part_done) options.part_done();
 
+    // Apexes the smoothing moved: their new places.
+    for (index_t p = 0; p < domain.front_points && !domain.apex_rank.empty(); ++p)
+        if (domain.apex_rank[p] != kNoIndex) {
+            const double* q = domain.point(p);
+            mesh.x[to_mesh[p]] = q[0];
+            mesh.y[to_mesh[p]] = q[1];
+            mesh.z[to_mesh[p]] = q[2];
+        }
     // Append: points after the front's become new mesh points, in domain order.
     const index_t domain_points = domain.point_count();
     to_mesh.resize(domain_points, kNoIndex);

@@ -36,6 +36,13 @@ struct TetStepOptions {
     RefineOptions refine;
     RelaxationOptions relaxation;
     OptimiseOptions optimise;
+    // Let the optimisation's smoothing move the pyramid apexes that only pyramids and tets hold,
+    // each pyramid kept at a scaled Jacobian of at least apex_floor: the tets between pyramids
+    // (three apexes and one free point) are then no longer fixed. Off by default: the tets'
+    // minimum and mean rise, the pyramids' fall towards the floor, and the optimisation takes
+    // longer (bench/results/tuning-notes.md).
+    bool move_apexes = false;
+    double apex_floor = 0.5;
     // Called after each of the three parts (recovery, refinement with the relaxation,
     // optimisation), for progress reports; may be empty. The mesh does not depend on it.
     std::function<void()> part_done;

@@ -1,6 +1,6 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--tet-relax R] [--max-elements N] [--report FILE.json] [--html FILE.html] [--quiet] [--solid K]
+// [--tet-relax R] [--move-apexes] [--max-elements N] [--report FILE.json] [--html FILE.html] [--quiet] [--solid K]
 // [--until STAGE] [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
 // CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
 // show progress, print the phases, Table 1 and where each surface group is, and write the mesh
@@ -154,6 +154,10 @@ Command add_mesh_command(CLI::App& app) {
                                 "(default {}; 0: none, mean collapse about 0.01 lower, time within about 15 % either way)",
                                 d.tet_relax))
         ->check(whole_in(run::kTetRelaxRange));
+    cmd->add_flag("--move-apexes", args->settings.move_apexes,
+                  "Let the tet optimisation move the pyramid apexes, each pyramid kept at a scaled Jacobian of at "
+                  "least 0.5: the tets' minimum and mean rise, the pyramids' fall (default: apexes stay where the "
+                  "pyramid layer put them)");
     args->max_elements_option =
         cmd->add_option("--max-elements", args->max_elements,
                         "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "

@@ -138,12 +138,24 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     double best = now.worst + min_gain;
     Vec3 best_x = here;
     bool improved = false;
+    // A pyramid apex keeps every pyramid it tops at apex_floor or better.
+    const auto allowed = [&](const Vec3& x) {
+        if (p >= dom.front_points) return true;
+        const index_t k = dom.apex_rank[p];
+        for (index_t b = dom.apex_at[k]; b < dom.apex_at[k + 1]; ++b) {
+            const auto& q = dom.apex_bases[b];
+            if (pyramid_scaled_jacobian({point_vec(dom, q[0]), point_vec(dom, q[1]), point_vec(dom, q[2]),
+                                         point_vec(dom, q[3]), x}) < dom.apex_floor)
+                return false;
+        }
+        return true;
+    };
     if (now.worst < floor)
         for (const Vec3& target : targets)
             for (double step : kSteps) {
                 const Vec3 x = here + step * (target - here);
                 const double q = star_quality(corners, x, best).worst;
-                if (q > best) {
+                if (q > best && allowed(x)) {
                     best = q;
                     best_x = x;
                     improved = true;
@@ -167,7 +179,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
             for (double step : k == 0 ? std::span<const double>(kUphillSteps) : sum_steps) {
                 const Vec3 x = here + step * (target - here);
                 const StarQuality q = star_quality(corners, x, give_up);
-                if (q.worst >= keep_above && q.sum > best_sum) {
+                if (q.worst >= keep_above && q.sum > best_sum && allowed(x)) {
                     best_sum = q.sum;
                     best_x = x;
                     improved = true;
@@ -223,8 +235,8 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
     std::vector<index_t> todo;
-    for (index_t p = dom.front_points; p < points; ++p)
-        if (!inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
+    for (index_t p = dom.apex_rank.empty() ? dom.front_points : 0; p < points; ++p)
+        if (dom.movable(p) && !inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
     std::vector<std::uint32_t> colour(points, kNoIndex);
     std::vector<std::uint8_t> moved, again(points, 0);
     std::vector<index_t> moved_points;
@@ -270,8 +282,8 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
         }
         counts.moves += moved_points.size();
         todo.clear();
-        for (index_t p = dom.front_points; p < points; ++p)
-            if (again[p]) {
+        for (index_t p = dom.apex_rank.empty() ? dom.front_points : 0; p < points; ++p)
+            if (again[p] && dom.movable(p)) {
                 todo.push_back(p);
                 again[p] = 0;
             }

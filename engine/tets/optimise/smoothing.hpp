@@ -6,7 +6,9 @@
 // floor) it moves along the gradient of the sum of its tets' collapses, or towards the ODT
 // position or the centroid, when that sum rises and the worst tet stays at or above
 // min(its value, floor); never when a tet inverts (exact orient3d).
-// Front points [0, front_points) never move; the topology does not change.
+// Front points [0, front_points) never move, but for the pyramid apexes the domain marks
+// movable (TetDomain::apex_rank), which also keep their pyramids at apex_floor or better; the
+// topology does not change.
 //
 // Parallel and deterministic: points are greedily coloured in index order so that no two
 // points of a colour share a tet (point_colouring.hpp); the points of one colour move at once

@@ -40,7 +40,8 @@ py::object json_object(const nlohmann::json& j) { return py::module_::import("js
 std::unique_ptr<MeshResult> mesh(const py::object& source, std::optional<double> size, std::optional<double> sweep_size,
                                  std::optional<int> circ, int layers, double axial_aspect, double pyramid_height,
                                  double gradation, std::optional<int> threads, int tet_parts, int tet_relax,
-                                 std::optional<double> max_elements, std::optional<int> solid, const std::string& until,
+                                 bool move_apexes, std::optional<double> max_elements, std::optional<int> solid,
+                                 const std::string& until,
                                  const py::object& progress) {
     run::MeshSettings s;
     s.size = size;
@@ -53,6 +54,7 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, std::optional<double>
     s.threads = threads;
     s.tet_parts = tet_parts;
     s.tet_relax = tet_relax;
+    s.move_apexes = move_apexes;
     s.max_elements = max_elements;
     s.solid = solid;
     s.until = run::stage_named(until, run::Naming::Keywords);
@@ -127,7 +129,8 @@ PYBIND11_MODULE(tubemesh, m) {
           py::arg("sweep_size") = py::none(), py::arg("circ") = py::none(), py::arg("layers") = d.layers,
           py::arg("axial_aspect") = d.axial_aspect, py::arg("pyramid_height") = d.pyramid_height,
           py::arg("gradation") = d.gradation, py::arg("threads") = py::none(), py::arg("tet_parts") = d.tet_parts,
-          py::arg("tet_relax") = d.tet_relax, py::arg("max_elements") = py::none(), py::arg("solid") = py::none(),
+          py::arg("tet_relax") = d.tet_relax, py::arg("move_apexes") = d.move_apexes,
+          py::arg("max_elements") = py::none(), py::arg("solid") = py::none(),
           py::arg("until") = std::string(stage_name(d.until)), py::arg("progress") = py::none(),
           R"doc(Meshes a CAD file (.step .stp .iges .igs .brep) or a built-in block (a preset name, see presets()).
 

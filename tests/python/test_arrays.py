@@ -123,3 +123,18 @@ def test_check_make_block_and_mesh_a_step_file(crankshaft, tmp_path):
     assert report["valid_and_conforming"]
     assert report["tets"] == len(r.tets) and report["hexes"] == len(r.hexes)
     assert "paper-ex1" in tubemesh.presets()
+
+
+def test_moved_apexes_keep_the_rings_and_the_pyramid_bases():
+    fixed = tubemesh.mesh("paper-ex3", threads=1)
+    moved = tubemesh.mesh("paper-ex3", threads=1, move_apexes=True)
+    assert np.array_equal(fixed.pyramids, moved.pyramids) and np.array_equal(fixed.hexes, moved.hexes)
+    bases = np.unique(fixed.pyramids[:, :4])
+    assert np.array_equal(fixed.nodes[bases], moved.nodes[bases])
+    assert np.array_equal(fixed.nodes[np.unique(fixed.hexes)], moved.nodes[np.unique(fixed.hexes)])
+    apexes = np.unique(fixed.pyramids[:, 4])
+    assert np.any(fixed.nodes[apexes] != moved.nodes[apexes])
+    tet = lambda r: r.report["quality"]["tet_collapse"]
+    assert tet(moved)["min"] >= tet(fixed)["min"]
+    assert moved.report["quality"]["pyramid_scaled_jacobian"]["min"] >= min(
+        0.5, fixed.report["quality"]["pyramid_scaled_jacobian"]["min"]) - 1e-12

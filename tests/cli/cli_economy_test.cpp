@@ -25,15 +25,15 @@ using testing::q;
 using testing::run_command;
 using testing::TempDir;
 
-struct Run {
+struct MeshRun {
     std::string out;
     json report;
 };
 
 // `tubemesh mesh <preset's STEP> --size S <options>`, once per command line.
-const Run& mesh(const std::string& preset, const std::string& size, const std::string& options) {
+const MeshRun& mesh(const std::string& preset, const std::string& size, const std::string& options) {
     static TempDir dir;
-    static std::map<std::string, Run> runs;
+    static std::map<std::string, MeshRun> runs;
     const std::string key = preset + " " + size + " " + options;
     auto [it, fresh] = runs.try_emplace(key);
     if (!fresh) return it->second;
@@ -86,7 +86,7 @@ TEST(CliEconomy, PaperEx3MeetsTheElementTotalAndTheMinima) {
 }
 
 TEST(CliEconomy, ReportShowsThePapersColumnForItsExamplesOnly) {
-    const Run& ex3 = mesh("paper-ex3", "40", "--economy");
+    const MeshRun& ex3 = mesh("paper-ex3", "40", "--economy");
     EXPECT_NE(ex3.out.find("Paper's Table 1, Example 3 (paper-ex3), beside this mesh"), std::string::npos) << ex3.out;
     const json& paper = ex3.report["paper_table1"];
     ASSERT_TRUE(paper.is_object());
@@ -96,7 +96,7 @@ TEST(CliEconomy, ReportShowsThePapersColumnForItsExamplesOnly) {
     EXPECT_EQ(paper["rows"][0]["paper"].get<double>(), 6997);
     EXPECT_EQ(paper["rows"][0]["this_mesh"].get<double>(), total(ex3.report));
 
-    const Run& other = mesh("straight-pipe", "0.5", "--economy");
+    const MeshRun& other = mesh("straight-pipe", "0.5", "--economy");
     ASSERT_FALSE(other.report.is_null());
     EXPECT_EQ(other.report["name"], "straight-pipe");
     EXPECT_FALSE(other.report.contains("paper_table1"));

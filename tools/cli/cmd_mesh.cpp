@@ -155,9 +155,9 @@ Command add_mesh_command(CLI::App& app) {
                                 d.gradation))
         ->check(number_in(run::kGradationRange));
     cmd->add_flag("--economy", args->economy,
-                  fmt::format("The paper's economy: {} nodes around each tube, {} hex layer, St = {} S (cut by the "
-                              "rules), axial step {} x the ring's outer side, curved edges to --chordal {}; far fewer "
-                              "elements than the default, which keeps quality first. Options given beside it win",
+                  fmt::format("The paper's economy: {} nodes around each tube in {} hex layers, St = {} S (cut by the "
+                              "rules), axial step {} x the ring's outer side, curved edges to --chordal {}; about half "
+                              "the default's elements, which keeps quality first. Options given beside it win",
                               run::kEconomy.circumferential, run::kEconomy.layers, run::kEconomy.sweep_share,
                               run::kEconomy.axial_aspect, run::kEconomy.chordal));
     args->threads_option = cmd->add_option("--threads", args->threads, "Worker threads (default: all cores; more than the cores are not used)")

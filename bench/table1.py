@@ -19,6 +19,7 @@ import sys
 import tempfile
 
 import gmsh
+from gmsh_scored import scored_quality
 
 # preset, S, Gmsh's target unit (the STEP file's), the paper's column (Table 1 and section 6).
 EXAMPLES = [
@@ -56,11 +57,7 @@ def gmsh_all_tet(tubemesh, step, size, unit, folder):
     gmsh.option.setNumber("Mesh.Algorithm3D", 10)  # HXT
     gmsh.option.setNumber("General.NumThreads", 2)
     gmsh.model.mesh.generate(3)
-    gmsh.model.addPhysicalGroup(3, [e[1] for e in gmsh.model.getEntities(3)])
-    gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
-    gmsh.write(out)
-    checked = subprocess.run([tubemesh, "check", "--json", out], capture_output=True, text=True)
-    q = json.loads(checked.stdout)["quality"]
+    q = scored_quality(tubemesh, out)
     return dict(elements=q["tet_collapse"]["count"], tets=q["tet_collapse"]["count"],
                 tet_min=q["tet_collapse"]["min"], tet_mean=q["tet_collapse"]["mean"])
 

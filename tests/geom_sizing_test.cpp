@@ -120,6 +120,10 @@ TEST(GeomSizing, SweepShareTakesStFromSAndTheRulesStillCutIt) {
     p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
     EXPECT_NEAR(p.size, std::sqrt(3.0) / 25, 1e-6);
     EXPECT_NEAR(p.sweep_size, 0.4 * p.size, 1e-12);
+    options.size = 0.8;  // 0.32 would be 16 radii: held at 12.5 (then cut by the boundary guard)
+    p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
+    EXPECT_NEAR(p.initial_sweep_size, 12.5 * kR, 1e-9);
+    EXPECT_EQ(p.sweep_source, "economy: 12.5 tube radii");
     options.sweep_size = 0.03;
     p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
     EXPECT_EQ(p.sweep_size, 0.03);

@@ -20,6 +20,10 @@ constexpr double kPyramidRoom = 2.2;
 constexpr double kGuardMargin = 0.95;
 constexpr double kDiagonalDivisor = 25;
 constexpr double kSizeOverSweep = 1.3;
+// A St from the sweep share stays within this many tube radii: a ring of 4 nodes thicker than that
+// has hexes over the analysis limit Cond 4 (the dam block at its default S: St 25 r, Cond 7.0;
+// 13 r: 3.9).
+constexpr double kShareMaxOverRadius = 12.5;
 
 std::string tube_name(int index) { return "tube " + std::to_string(index + 1); }
 
@@ -133,8 +137,10 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
             plan.size == diagonal / kDiagonalDivisor ? "default: bounding-box diagonal / 25" : "default: 1.3 St";
     }
     if (share) {
-        plan.sweep_size = options.sweep_share * plan.size;
-        plan.sweep_source = "economy: " + fmt(options.sweep_share) + " S";
+        plan.sweep_size = std::min(options.sweep_share * plan.size, kShareMaxOverRadius * e.r_min);
+        plan.sweep_source = plan.sweep_size < options.sweep_share * plan.size
+                                ? "economy: " + fmt(kShareMaxOverRadius) + " tube radii"
+                                : "economy: " + fmt(options.sweep_share) + " S";
     }
     plan.initial_size = plan.size;
     plan.initial_sweep_size = plan.sweep_size;

@@ -155,8 +155,8 @@ Command add_mesh_command(CLI::App& app) {
                                 d.gradation))
         ->check(number_in(run::kGradationRange));
     cmd->add_flag("--economy", args->economy,
-                  fmt::format("The paper's economy: {} nodes around each tube in {} hex layers, St = {} S (cut by the "
-                              "rules), axial step {} x the ring's outer side, curved edges to --chordal {}; about half "
+                  fmt::format("The paper's economy: {} nodes around each tube in {} hex layers, St = {} S (at most 12.5 "
+                              "tube radii, cut by the rules), axial step {} x the ring's outer side, curved edges to --chordal {}; about half "
                               "the default's elements, which keeps quality first. Options given beside it win",
                               run::kEconomy.circumferential, run::kEconomy.layers, run::kEconomy.sweep_share,
                               run::kEconomy.axial_aspect, run::kEconomy.chordal));

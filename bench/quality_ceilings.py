@@ -33,7 +33,7 @@ import sys
 import tempfile
 
 import gmsh
-from gmsh_scored import scored_quality
+from gmsh_scored import scored_gmsh_mesh
 import meshio
 import numpy as np
 
@@ -192,16 +192,10 @@ def ours(tubemesh, step, options, folder):
 
 
 def gmsh_tets(tubemesh, step, size, folder):
-    out = os.path.join(folder, "gmsh.msh")
-    gmsh.clear()
-    gmsh.model.occ.importShapes(step)
-    gmsh.model.occ.synchronize()
-    gmsh.option.setNumber("Mesh.MeshSizeMin", size)
-    gmsh.option.setNumber("Mesh.MeshSizeMax", size)
-    gmsh.option.setNumber("Mesh.Algorithm3D", 1)  # Delaunay
-    gmsh.option.setNumber("Mesh.Optimize", 1)
-    gmsh.model.mesh.generate(3)
-    return summary(scored_quality(tubemesh, out)) + ["", "", ""]
+    quality = scored_gmsh_mesh(tubemesh, step, os.path.join(folder, "gmsh.msh"),
+                               {"Mesh.MeshSizeMin": size, "Mesh.MeshSizeMax": size,
+                                "Mesh.Algorithm3D": 1, "Mesh.Optimize": 1})  # 1: Delaunay
+    return summary(quality) + ["", "", ""]
 
 
 def main():

@@ -19,7 +19,7 @@ import sys
 import tempfile
 
 import gmsh
-from gmsh_scored import scored_quality
+from gmsh_scored import scored_gmsh_mesh
 
 # preset, S, Gmsh's target unit (the STEP file's), the paper's column (Table 1 and section 6).
 EXAMPLES = [
@@ -47,17 +47,10 @@ def ours(tubemesh, step, size, options, folder):
 
 
 def gmsh_all_tet(tubemesh, step, size, unit, folder):
-    out = os.path.join(folder, "gmsh.msh")
-    gmsh.clear()
-    gmsh.option.setString("Geometry.OCCTargetUnit", unit)
-    gmsh.model.occ.importShapes(step)
-    gmsh.model.occ.synchronize()
-    gmsh.option.setNumber("Mesh.MeshSizeMax", size)
-    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", CURVATURE_ELEMENTS)
-    gmsh.option.setNumber("Mesh.Algorithm3D", 10)  # HXT
-    gmsh.option.setNumber("General.NumThreads", 2)
-    gmsh.model.mesh.generate(3)
-    q = scored_quality(tubemesh, out)
+    q = scored_gmsh_mesh(tubemesh, step, os.path.join(folder, "gmsh.msh"),
+                         {"Mesh.MeshSizeMax": size, "Mesh.MeshSizeFromCurvature": CURVATURE_ELEMENTS,
+                          "Mesh.Algorithm3D": 10, "General.NumThreads": 2},  # 10: HXT
+                         {"Geometry.OCCTargetUnit": unit})
     return dict(elements=q["tet_collapse"]["count"], tets=q["tet_collapse"]["count"],
                 tet_min=q["tet_collapse"]["min"], tet_mean=q["tet_collapse"]["mean"])
 

@@ -60,6 +60,7 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
 
     run.source = model.report().source;
     run.format = model.report().format;
+    run.name = model.report().name;
     run.model_lines = prepared.report_lines();
     run.size = prepared.geometry.size;
     run.sweep_size = prepared.geometry.sweep_size;

@@ -33,6 +33,7 @@ struct MeshRun {
     PipelineResult result;
     std::string source;                   // the file, or "builder: <preset>"
     std::string format;                   // "STEP", "IGES", "BREP" or "built"
+    std::string name;                     // the solid's name (ImportReport::name), may be empty
     std::vector<std::string> model_lines;  // tubes found and not, S and St and every rule applied
     double size = 0;                      // S used
     double sweep_size = 0;                // St used (0 without tubes)

@@ -16,6 +16,9 @@ namespace tubemesh::geom {
 struct ImportReport {
     std::string source;       // the file path, or "builder: <preset>" for a built block
     std::string format;       // "STEP", "IGES", "BREP" or "built"
+    // The solid's name: the one a STEP file gives it (make-block writes the preset's), or the
+    // built block's preset or spec name; empty when the file names none.
+    std::string name;
     std::string length_unit;  // as the file declares it ("millimetre", "metre", "inch"); "model units" for BREP
     int solids_in_file = 1;   // how many solids the file held
     int solid_index = 1;      // which one (1-based) this Model is

@@ -106,7 +106,9 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     PrepareOptions p;
     p.sizing.size = options.size;
     p.sizing.sweep_size = options.sweep_size;
+    p.sizing.sweep_share = options.sweep_share;
     p.discretize.ring_nodes = options.circumferential;
+    p.discretize.chordal = options.chordal;
     p.budget.max_elements = options.max_elements;
     p.budget.sweep = options.sweep;
     p.progress = options.progress;

@@ -245,6 +245,32 @@ TEST(GeomDiscretize, CircleEdgeSegmentsTurnAtMost0065) {
     }
 }
 
+TEST(GeomDiscretize, ChordalToleranceBoundsEachChordsGapToTheCircle) {
+    // r = 0.1 at S = 10: the circles are cut by the tolerance alone. A chord turning by t lies
+    // r (1 - cos(t / 2)) from its arc; that gap stays within `chordal` of the chord's length, and
+    // the circle is not cut much finer than that asks.
+    const double r = 0.1;
+    const geom::Model model = test::model_of(test::box_with_blind_hole(r, 0.3));
+    for (const double chordal : {0.002, kDefaultChordal, 0.02, 0.05}) {
+        SCOPED_TRACE("chordal " + std::to_string(chordal));
+        int circles = 0;
+        for (const EdgePolyline& e : geom::discretize_edges(model, {}, 10.0, chordal)) {
+            if (e.first_vertex != e.last_vertex) continue;
+            ++circles;
+            double worst = 0;
+            for (std::size_t k = 0; k + 1 < e.points.size(); ++k) {
+                const double chord = norm(e.points[k + 1] - e.points[k]);
+                const double turn = 2 * std::asin(chord / (2 * r));
+                worst = std::max(worst, r * (1 - std::cos(turn / 2)) / chord);
+            }
+            EXPECT_LE(worst, chordal * (1 + 1e-9)) << "edge " << e.edge;
+            EXPECT_GT(worst, 0.8 * chordal) << "edge " << e.edge;
+        }
+        EXPECT_EQ(circles, 2);
+    }
+    EXPECT_THROW(geom::discretize_edges(model, {}, 10.0, 0.0), Error);
+}
+
 TEST(GeomDiscretize, FinerSizeStillWinsOnACircleEdge) {
     // r = 0.1 at S = 0.005: 126 segments by size, more than the 97 the turn asks for.
     const geom::Model model = test::model_of(test::box_with_blind_hole(0.1, 0.3));

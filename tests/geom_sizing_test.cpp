@@ -104,6 +104,45 @@ TEST(GeomSizing, CuttingStKeepsTheUsersSize) {
     EXPECT_EQ(p.size, 0.3);
 }
 
+TEST(GeomSizing, SweepShareTakesStFromSAndTheRulesStillCutIt) {
+    // The economy preset's St = share x S: from the given S, from the default S, not over a given
+    // St, and cut by the rules like the default St (the pipe 0.05 from a face).
+    const geom::Model centred = test::model_of(
+        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.5, -0.1}, {0.5, 0.5, 1.1})}, kR));
+    geom::SizingOptions options;
+    options.sweep_share = 0.4;
+    options.size = 0.2;
+    geom::SizePlan p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
+    EXPECT_NEAR(p.sweep_size, 0.08, 1e-12);
+    EXPECT_TRUE(p.changes.empty()) << changes(p);
+    EXPECT_EQ(p.sweep_source.substr(0, 8), "economy:");
+    options.size = 0;
+    p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
+    EXPECT_NEAR(p.size, std::sqrt(3.0) / 25, 1e-6);
+    EXPECT_NEAR(p.sweep_size, 0.4 * p.size, 1e-12);
+    options.size = 0.8;  // 0.32 would be 16 radii: held at 12.5 (then cut by the boundary guard)
+    p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
+    EXPECT_NEAR(p.initial_sweep_size, 12.5 * kR, 1e-9);
+    EXPECT_EQ(p.sweep_source, "economy: 12.5 tube radii");
+    options.sweep_size = 0.03;
+    p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
+    EXPECT_EQ(p.sweep_size, 0.03);
+    EXPECT_EQ(p.sweep_source, "user");
+
+    const geom::Model near_face = test::model_of(
+        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR));
+    geom::SizingOptions share;
+    share.sweep_share = 0.4;
+    share.size = 0.3;
+    p = geom::plan_sizes(near_face, geom::find_tubes(near_face).tubes, share);
+    ASSERT_GE(p.changes.size(), 1u);
+    EXPECT_NEAR(p.changes.front().old_sweep_size, 0.12, 1e-12);
+    EXPECT_LT(p.sweep_size, 0.05);
+    EXPECT_EQ(p.size, 0.3);
+    share.sweep_share = 1;  // St could never be below S
+    EXPECT_THROW(geom::plan_sizes(near_face, geom::find_tubes(near_face).tubes, share), Error);
+}
+
 TEST(GeomSizing, TwoClosePipesTriggerRuleTwo) {
     // Walls 0.06 apart, 0.43 from the side faces.
     const geom::SizePlan p = plan_for(test::box_with_pipes({0, 0, 0}, {1, 1, 1},

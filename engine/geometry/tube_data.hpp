@@ -45,6 +45,11 @@ struct TubeData {
     std::vector<Vec3> ring2;
 };
 
+// How far a curved B-rep edge's chords may stray from it, as a fraction of each chord's own
+// length (the local size along the edge). 0.008125 lets a segment turn by 0.065 rad: an inscribed
+// polygon then misses 7e-4 of a disk's area. Cut finer by S where S asks for it.
+inline constexpr double kDefaultChordal = 0.008125;
+
 // A B-rep edge cut into segments by arc length. Shared by every face that uses the edge, so
 // neighbouring face meshes meet node for node.
 struct EdgePolyline {

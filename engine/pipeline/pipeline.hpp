@@ -83,10 +83,16 @@ struct MeshOptions {
     // diameter, then cut by the paper's rules. A value given here is honoured or refused: if
     // the rules would have to cut it, or it is not below S, preparing the model throws.
     double sweep_size = 0;
+    // > 0: when sweep_size is 0, St starts from this share of S instead of the tube diameter
+    // (the economy preset); the rules still cut it. 0 (default): unused.
+    double sweep_share = 0;
     // n, nodes around every tube. 0 (default): the multiple of 4 nearest to the ring's
     // mid-circumference over St, at least 8 (circumferential_count in engine/sweep/sweep.hpp,
     // which says why; the paper's 4 only when given).
     int circumferential = 0;
+    // How far a curved B-rep edge's chords may stray from it, as a fraction of each chord's
+    // length (geom/sizing/discretize_edges.hpp). kDefaultChordal: segments turn by 0.065 rad.
+    double chordal = kDefaultChordal;
 
     // Hex ring options (engine/sweep/sweep.hpp documents each default: L = 2 layers graded
     // 1.5, axial aspect 1.5, condition cap 3.0). sweep.sweep_size = 0 (the default) takes

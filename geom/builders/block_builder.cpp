@@ -261,6 +261,7 @@ BuiltBlock build_block(const BlockSpec& spec) {
         ImportReport report;
         report.source = "builder: " + spec.name;
         report.format = "built";
+        report.name = spec.name;
         report.length_unit = spec.length_unit;
         Model model = make_model(solids.front(), std::move(report));
         info.volume = model.volume();

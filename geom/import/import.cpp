@@ -86,6 +86,14 @@ std::vector<TopoDS_Solid> solids_from_surfaces(const TopoDS_Shape& shape, const 
     return out;
 }
 
+// The name the file gives `solid`: its own entry, or the file's only name when it holds one
+// solid (the reader's healing may have handed over a copy of the named shape).
+std::string solid_name(const CadFile& file, const TopoDS_Shape& solid, int solids) {
+    for (const auto& [shape, name] : file.names)
+        if (shape.IsSame(solid)) return name;
+    return solids == 1 && file.names.size() == 1 ? file.names.front().second : std::string();
+}
+
 }  // namespace
 
 Model import_model(const std::filesystem::path& path, const ImportOptions& options) {
@@ -118,6 +126,7 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
         report.solid_index = options.solid == 0 ? 1 : options.solid;
 
         TopoDS_Shape chosen = solids[static_cast<std::size_t>(report.solid_index - 1)];
+        report.name = solid_name(file, chosen, n);
         bool healing_ran = false;
         if (options.heal) {
             if (std::optional<TopoDS_Shape> h = heal_shape(chosen, report.healing)) {

@@ -57,7 +57,16 @@ namespace {
 
 // The name of the representation items each shape became: a solid of a compound is written
 // as a shape definition whose representation holds its MANIFOLD_SOLID_BREP.
-void name_items(STEPControl_Writer& writer, std::span<const NamedShape> names) {
+void name_items(STEPControl_Writer& writer, const TopoDS_Shape& root, std::span<const NamedShape> names) {
+    // A lone solid written as the root: the writer maps it to its product, not to the solid's
+    // item, so name the model's one solid item directly.
+    if (names.size() == 1 && names.front().first.IsSame(root) && root.ShapeType() == TopAbs_SOLID) {
+        const Handle(StepData_StepModel) model = writer.Model();
+        for (int i = 1; i <= model->NbEntities(); ++i)
+            if (const auto solid = Handle(StepShape_SolidModel)::DownCast(model->Value(i)); !solid.IsNull())
+                solid->SetName(new TCollection_HAsciiString(names.front().second.c_str()));
+        return;
+    }
     const Handle(Transfer_FinderProcess) process = writer.WS()->TransferWriter()->FinderProcess();
     for (const auto& [shape, name] : names) {
         const Handle(TransferBRep_ShapeMapper) mapper = TransferBRep::ShapeMapper(process, shape);
@@ -95,7 +104,7 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
         writer.Model()->SetWriteLengthUnit(unit.millimetres);
         if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
             throw Error("cannot write " + path.string() + ": OpenCASCADE could not translate the shape to STEP");
-        name_items(writer, names);
+        name_items(writer, shape, names);
         if (writer.Write(tmp.c_str()) != IFSelect_RetDone)
             throw Error("cannot write " + path.string() + ": the directory is missing or not writable");
     } catch (const Standard_Failure& e) {
@@ -116,7 +125,13 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
 }
 
 void write_step(const Model& model, const std::filesystem::path& path) {
-    write_step_shape(solid_of(model), path, model.report().length_unit);
+    const std::string& name = model.report().name;
+    if (name.empty()) {
+        write_step_shape(solid_of(model), path, model.report().length_unit);
+    } else {
+        const NamedShape named[] = {{solid_of(model), name}};
+        write_step_shape(solid_of(model), path, model.report().length_unit, named);
+    }
 }
 
 }  // namespace tubemesh::geom

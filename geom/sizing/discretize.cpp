@@ -86,7 +86,7 @@ DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tub
             for (const FaceWire& w : index.face_wires[f])
                 for (const LoopEdge& e : w.edges) tube_edges.insert(e.edge);
     }
-    out.edges = discretize_edges(model, tube_edges, plan.size);
+    out.edges = discretize_edges(model, tube_edges, plan.size, options.chordal);
     return out;
 }
 

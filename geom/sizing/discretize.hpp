@@ -2,7 +2,7 @@
 // Discretisation of the B-rep for the engine (paper §3.2): each tube's two end loops with the
 // same node count and node 0 of both on one generator line of the wall, its centre line by
 // arc length with tangents and reference directions, and every other B-rep edge by arc length
-// at the overall size S (finer on a curved edge, whose segments turn by at most 0.065 rad),
+// at the overall size S (finer on a curved edge, by the chordal tolerance: discretize_edges.hpp),
 // once per edge however many faces share it.
 //
 // No OpenCASCADE header here: the output is engine/geometry/tube_data.hpp's plain data.
@@ -18,6 +18,8 @@ namespace tubemesh::geom {
 struct DiscretizeOptions {
     // Nodes around every tube; 0 picks circumferential_count() (engine/sweep/sweep.hpp) per tube.
     int ring_nodes = 0;
+    // Curved edges' chords stray from the curve by at most this fraction of their length.
+    double chordal = kDefaultChordal;
 };
 
 // n for one tube: `ring_nodes` when given (> 0), else circumferential_count at its mean radius.

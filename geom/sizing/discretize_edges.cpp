@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/core/types.hpp"
 #include "geom/model_occt.hpp"
 
 namespace tubemesh::geom {
@@ -22,10 +23,6 @@ namespace {
 
 Vec3 to_vec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
-// A curved edge's segments turn by at most this angle (radians). An inscribed polygon then
-// misses at most kMaxTurn^2 / 6 (7e-4) of a disk's area, inside the surface's bar of 1e-3 on flat
-// faces: a flat face bounded by a circle is meshed no better than its boundary polygon.
-constexpr double kMaxTurn = 0.065;
 // Curvature samples along a free-form edge (exact for lines, circles and ellipses).
 constexpr int kCurvatureSamples = 64;
 // Curvature never asks for more segments than this on one edge (a near-cusp of a free-form
@@ -52,6 +49,10 @@ double max_curvature(const BRepAdaptor_Curve& curve) {
     return std::isfinite(k) ? k : 0;
 }
 
+// The turn of a circular arc whose chord strays from it by `chordal` times the chord's length:
+// the sagitta of a chord turning by t is tan(t / 4) / 2 of its length.
+double max_turn(double chordal) { return 4 * std::atan(2 * chordal); }
+
 std::vector<double> uniform_params(const BRepAdaptor_Curve& curve, int segments) {
     const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
     GCPnts_UniformAbscissa split(curve, segments + 1, t0, t1);
@@ -70,7 +71,10 @@ std::vector<double> uniform_params(const BRepAdaptor_Curve& curve, int segments)
 
 }  // namespace
 
-std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<int>& skip, double size) {
+std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<int>& skip, double size,
+                                           double chordal) {
+    if (!(chordal > 0)) throw Error("the chordal tolerance must be positive, got " + std::to_string(chordal));
+    const double turn = max_turn(chordal);
     // geom::Model numbers faces and edges; vertices get TopExp::MapShapes order on the solid,
     // which is just as deterministic.
     TopTools_IndexedMapOfShape vertices;
@@ -88,7 +92,7 @@ std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<in
         const bool closed = v0.IsSame(v1);
         const int by_size = static_cast<int>(std::ceil(length / size - 1e-9));
         const int by_turn =
-            static_cast<int>(std::ceil(std::min(kMaxTurnSegments, max_curvature(curve) * length / kMaxTurn) - 1e-9));
+            static_cast<int>(std::ceil(std::min(kMaxTurnSegments, max_curvature(curve) * length / turn) - 1e-9));
         const int segments = std::max({closed ? 3 : 1, by_size, by_turn});
 
         EdgePolyline poly;

@@ -1,7 +1,8 @@
 #pragma once
 // B-rep edges cut by arc length (GCPnts_UniformAbscissa) into segments of at most a given
-// size, and on a curved edge into enough segments that none turns by more than 0.065 rad,
-// skipping the edges a tube owns.
+// size, and on a curved edge into enough segments that no chord strays from the curve by more
+// than `chordal` times its length (kDefaultChordal: a turn of 0.065 rad per segment), skipping
+// the edges a tube owns.
 #include <set>
 #include <vector>
 
@@ -11,7 +12,9 @@
 namespace tubemesh::geom {
 
 // One polyline per non-degenerate edge not in `skip`, by increasing edge id. A closed edge
-// gets at least 3 segments, so it stays a polygon.
-std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<int>& skip, double size);
+// gets at least 3 segments, so it stays a polygon. Throws tubemesh::Error when `chordal` is not
+// positive.
+std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<int>& skip, double size,
+                                           double chordal = kDefaultChordal);
 
 }  // namespace tubemesh::geom

@@ -20,6 +20,10 @@ constexpr double kPyramidRoom = 2.2;
 constexpr double kGuardMargin = 0.95;
 constexpr double kDiagonalDivisor = 25;
 constexpr double kSizeOverSweep = 1.3;
+// A St from the sweep share stays within this many tube radii: a ring of 4 nodes thicker than that
+// has hexes over the analysis limit Cond 4 (the dam block at its default S: St 25 r, Cond 7.0;
+// 13 r: 3.9).
+constexpr double kShareMaxOverRadius = 12.5;
 
 std::string tube_name(int index) { return "tube " + std::to_string(index + 1); }
 
@@ -110,13 +114,17 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
     check_user_size(options.sweep_size, "the sweep size St");
     SizePlan plan;
     const Extremes e = extremes(tubes);
+    if (!(options.sweep_share >= 0 && options.sweep_share < 1 / kSizeOverSweep))
+        throw Error("the sweep share St / S must be at least 0 and below " + fmt(1 / kSizeOverSweep) + ", got " +
+                    fmt(options.sweep_share));
+    const bool share = options.sweep_share > 0 && options.sweep_size <= 0 && !tubes.empty();
     if (options.sweep_size > 0) {
         plan.sweep_size = options.sweep_size;
         plan.sweep_source = "user";
-    } else if (!tubes.empty()) {
+    } else if (!tubes.empty() && !share) {
         plan.sweep_size = 2 * e.r_min;
         plan.sweep_source = "default: smallest tube diameter";
-    } else {
+    } else if (tubes.empty()) {
         plan.sweep_source = "no tubes";
     }
     if (options.size > 0) {
@@ -127,6 +135,12 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
         plan.size = std::max(diagonal / kDiagonalDivisor, kSizeOverSweep * plan.sweep_size);
         plan.size_source =
             plan.size == diagonal / kDiagonalDivisor ? "default: bounding-box diagonal / 25" : "default: 1.3 St";
+    }
+    if (share) {
+        plan.sweep_size = std::min(options.sweep_share * plan.size, kShareMaxOverRadius * e.r_min);
+        plan.sweep_source = plan.sweep_size < options.sweep_share * plan.size
+                                ? "economy: " + fmt(kShareMaxOverRadius) + " tube radii"
+                                : "economy: " + fmt(options.sweep_share) + " S";
     }
     plan.initial_size = plan.size;
     plan.initial_sweep_size = plan.sweep_size;

@@ -27,7 +27,9 @@
 //
 // Defaults: St = the smallest tube diameter (2 r_min): with n ring nodes chosen so the
 // ring's quads are about square, that gives 8 nodes around a tube. S = the bounding-box
-// diagonal / 25, but at least 1.3 St. Without tubes St is 0 and only S is planned.
+// diagonal / 25, but at least 1.3 St. Without tubes St is 0 and only S is planned. With a
+// sweep share (the economy preset) the default St is that share of S instead (S first), at most
+// 12.5 tube radii: a thicker ring of 4 nodes has hexes over Cond 4.
 //
 // No OpenCASCADE header here: the CLI prints plans through this file.
 #include <string>
@@ -41,6 +43,9 @@ namespace tubemesh::geom {
 struct SizingOptions {
     double size = 0;        // S; 0 chooses the default
     double sweep_size = 0;  // St; 0 chooses the default
+    // > 0: the default St is this share of S (given or default), at most 12.5 smallest tube radii,
+    // instead of the smallest tube diameter; the rules and guards still cut it. A given St wins.
+    double sweep_share = 0;
 };
 
 struct SizeChange {

@@ -35,11 +35,17 @@ def opened(cli, tmp_path_factory):
             phases: document.getElementById('phases').getBoundingClientRect(),
             histograms: Array.from(document.querySelectorAll('canvas.histogram'),
                                    c => c.getBoundingClientRect())})""")
+        paper = page.evaluate("""JSON.stringify({
+            shown: !document.getElementById('paper-section').hidden,
+            title: document.getElementById('paper-title').textContent,
+            rows: Array.from(document.getElementById('paper-table').rows,
+                             r => Array.from(r.cells, c => c.textContent))})""")
         kinds = page.evaluate("JSON.stringify(JSON.parse(document.getElementById('tubemesh-data').textContent)"
                               ".histograms.map(h => h.kind))")
         page.screenshot(folder / "report.png")
         errors = page.errors()
     return {"report": report, "json": json.loads((folder / "dam.json").read_text()), "errors": errors, "rects": json.loads(rects), "kinds": json.loads(kinds),
+            "paper": json.loads(paper),
             "image": Image.open(folder / "report.png").convert("RGB")}
 
 
@@ -69,6 +75,18 @@ def test_the_page_holds_the_run_and_a_small_cut(opened):
     assert len(data["view"]["points"]) % 3 == 0
     assert [row[2] for row in data["table"] if row[1] == "Num. element"] == [
         str(theirs["tets"]), str(theirs["pyramids"]), str(theirs["hexes"])]
+
+
+def test_the_papers_column_is_beside_ours(opened):
+    # The built-in dam block is the paper's first example: its Table 1 column beside the mesh's.
+    paper = opened["paper"]
+    assert paper["shown"]
+    assert "Example 1 (paper-ex1)" in paper["title"]
+    rows = {row[0]: row[1:] for row in paper["rows"][1:]}
+    report = opened["json"]
+    assert rows["Elements"] == ["58594", str(report["hexes"] + report["pyramids"] + report["tets"])]
+    assert rows["Tet collapse min"] == ["0.362795", "%.6f" % report["quality"]["tet_collapse"]["min"]]
+    assert rows["All-tet mesher's tets"] == ["1061195", "-"]
 
 
 def test_the_3d_view_is_drawn(opened):

@@ -1,4 +1,4 @@
-// `tubemesh mesh [IN] [-o OUT ...] [--size S] [--sweep-size St] [--circ N] [--layers L]
+// `tubemesh mesh [IN] [-o OUT ...] [--economy] [--size S] [--sweep-size St] [--circ N] [--layers L] [--chordal C]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
 // [--tet-relax R] [--move-apexes] [--max-elements N] [--report FILE.json] [--html FILE.html] [--quiet] [--solid K]
 // [--until STAGE] [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
@@ -13,6 +13,7 @@
 // complete. Any error: one line on stderr, exit 2, no output file, earlier files untouched.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 #include <memory>
 #include <new>
@@ -51,11 +52,13 @@ struct MeshArgs {
     bool quiet = false;
     bool msh_ascii = false;
     bool assembly = false;
+    bool economy = false;
     double glue_tolerance = 0;
     std::string inp_family = run::kInpFamilies[0];
     std::string inp_pyramid = run::kInpPyramids[0];
     CLI::Option *size_option = nullptr, *sweep_option = nullptr, *circ_option = nullptr, *threads_option = nullptr,
-                *max_elements_option = nullptr, *solid_option = nullptr;
+                *max_elements_option = nullptr, *solid_option = nullptr, *layers_option = nullptr,
+                *axial_option = nullptr, *chordal_option = nullptr;
 };
 
 template <class T>
@@ -98,6 +101,10 @@ MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
     take_if_given(s.threads, a.threads_option, a.threads);
     take_if_given(s.max_elements, a.max_elements_option, a.max_elements);
     take_if_given(s.solid, a.solid_option, a.solid);
+    if (a.economy)
+        run::apply_economy(s, {.layers = a.layers_option->count() > 0,
+                               .axial_aspect = a.axial_option->count() > 0,
+                               .chordal = a.chordal_option->count() > 0});
     MeshOptions o = run::mesh_options(s, run::Naming::Flags);
     o.progress = progress.callback();
     return o;
@@ -127,11 +134,16 @@ Command add_mesh_command(CLI::App& app) {
         cmd->add_option("--circ", args->circumferential,
                         "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 8)")
             ->check(whole_in(run::kCircRange));
-    cmd->add_option("--layers", args->settings.layers,
+    args->chordal_option = cmd->add_option("--chordal", args->settings.chordal,
+                    fmt::format("Curved CAD edges: largest gap between a chord and the curve over the chord's length "
+                                "(default {}: a segment turns by at most {:.3f} rad)",
+                                d.chordal, 4 * std::atan(2 * d.chordal)))
+        ->check(number_in(run::kChordalRange));
+    args->layers_option = cmd->add_option("--layers", args->settings.layers,
                     fmt::format("Hex layers across the ring, L (default {}, graded {} towards the wall)", d.layers,
                                 run::default_mesh_options().sweep.grading))
         ->check(whole_in(run::kLayersRange));
-    cmd->add_option("--axial-aspect", args->settings.axial_aspect,
+    args->axial_option = cmd->add_option("--axial-aspect", args->settings.axial_aspect,
                     fmt::format("Axial step of the hex rings over St (default {})", d.axial_aspect))
         ->check(number_in(run::kAxialAspectRange));
     cmd->add_option("--pyramid-height", args->settings.pyramid_height,
@@ -142,6 +154,12 @@ Command add_mesh_command(CLI::App& app) {
                     fmt::format("Largest growth of the tet size from one element to the next (default {})",
                                 d.gradation))
         ->check(number_in(run::kGradationRange));
+    cmd->add_flag("--economy", args->economy,
+                  fmt::format("The paper's economy: {} nodes around each tube in {} hex layers, St = {} S (at most 12.5 "
+                              "tube radii, cut by the rules), axial step {} x the ring's outer side, curved edges to --chordal {}; about half "
+                              "the default's elements, which keeps quality first. Options given beside it win",
+                              run::kEconomy.circumferential, run::kEconomy.layers, run::kEconomy.sweep_share,
+                              run::kEconomy.axial_aspect, run::kEconomy.chordal));
     args->threads_option = cmd->add_option("--threads", args->threads, "Worker threads (default: all cores; more than the cores are not used)")
                                ->check(whole_in(run::kThreadsRange));
     cmd->add_option("--tet-parts", args->settings.tet_parts,

@@ -4,6 +4,7 @@
 
 #include "engine/io/mesh_notes.hpp"
 #include "engine/mesh/surface_groups.hpp"
+#include "tools/run/paper_table.hpp"
 #include "tools/run/quality_table.hpp"
 
 namespace tubemesh::run {
@@ -78,7 +79,10 @@ std::vector<std::string> phase_lines(const geom::MeshRun& run) {
 
 std::string run_table(const geom::MeshRun& run) {
     const PipelineResult& r = run.result;
-    return format_run_table(r.quality, r.mesh.point_count(), kind_times(run), r.seconds);
+    std::string table = format_run_table(r.quality, r.mesh.point_count(), kind_times(run), r.seconds);
+    if (const PaperExample* paper = paper_example(run.name))
+        table += "\n" + format_paper_table(*paper, paper_rows(*paper, r.quality, r.mesh.point_count()));
+    return table;
 }
 
 std::vector<TableRow> run_table_rows(const geom::MeshRun& run) {
@@ -103,33 +107,37 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
     const index_t cells = m.cell_count();
     nlohmann::json node_sets = nlohmann::json::object();
     for (const NamedNodeSet& n : r.description.node_sets) node_sets[n.name] = n.nodes.size();
-    return {{"source", run.source},
-            {"format", run.format},
-            {"stage", stage_name(r.reached)},
-            {"sizes", {{"S", run.size}, {"St", run.sweep_size}}},
-            {"tubes", run.tubes},
-            {"nodes", m.point_count()},
-            {"hexes", m.cell_count(CellKind::Hex)},
-            {"pyramids", m.cell_count(CellKind::Pyramid)},
-            {"tets", m.cell_count(CellKind::Tet)},
-            {"boundary_triangles", m.face_count(FaceKind::Tri)},
-            {"boundary_quads", m.face_count(FaceKind::Quad)},
-            {"length_unit", r.description.length_unit},
-            {"regions", m.region_names},
-            {"surface_groups", groups_json(m, r.description)},
-            {"node_sets", node_sets},
-            {"phases", phases},
-            {"total_seconds", r.seconds},
-            {"elements_per_second", r.seconds > 0 ? cells / r.seconds : 0.0},
-            {"quality", quality_json(r.quality)},
-            {"check",
-             {{"interior_faces", r.check.interior_faces},
-              {"free_faces", r.check.boundary_faces},
-              {"volume", r.check.volume},
-              {"violations_expected_at_this_stage", violations}}},
-            {"warnings", r.warnings},
-            {"model", run.model_lines},
-            {"outputs", outputs}};
+    nlohmann::json report = {{"source", run.source},
+                             {"format", run.format},
+                             {"name", run.name},
+                             {"stage", stage_name(r.reached)},
+                             {"sizes", {{"S", run.size}, {"St", run.sweep_size}}},
+                             {"tubes", run.tubes},
+                             {"nodes", m.point_count()},
+                             {"hexes", m.cell_count(CellKind::Hex)},
+                             {"pyramids", m.cell_count(CellKind::Pyramid)},
+                             {"tets", m.cell_count(CellKind::Tet)},
+                             {"boundary_triangles", m.face_count(FaceKind::Tri)},
+                             {"boundary_quads", m.face_count(FaceKind::Quad)},
+                             {"length_unit", r.description.length_unit},
+                             {"regions", m.region_names},
+                             {"surface_groups", groups_json(m, r.description)},
+                             {"node_sets", node_sets},
+                             {"phases", phases},
+                             {"total_seconds", r.seconds},
+                             {"elements_per_second", r.seconds > 0 ? cells / r.seconds : 0.0},
+                             {"quality", quality_json(r.quality)},
+                             {"check",
+                              {{"interior_faces", r.check.interior_faces},
+                               {"free_faces", r.check.boundary_faces},
+                               {"volume", r.check.volume},
+                               {"violations_expected_at_this_stage", violations}}},
+                             {"warnings", r.warnings},
+                             {"model", run.model_lines},
+                             {"outputs", outputs}};
+    if (const PaperExample* paper = paper_example(run.name))
+        report["paper_table1"] = paper_table_json(*paper, paper_rows(*paper, r.quality, m.point_count()));
+    return report;
 }
 
 }  // namespace tubemesh::run

@@ -41,6 +41,7 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
         throw Error(fmt::format("contradictory sizes: {} {} must be smaller than {} {}", option_name("sweep_size", naming),
                                 *s.sweep_size, option_name("size", naming), *s.size));
     if (s.circumferential) require_in(*s.circumferential, kCircRange, "circ", naming);
+    require_in(s.chordal, kChordalRange, "chordal", naming);
     require_in(s.layers, kLayersRange, "layers", naming);
     require_in(s.axial_aspect, kAxialAspectRange, "axial_aspect", naming);
     require_in(s.pyramid_height, kPyramidHeightRange, "pyramid_height", naming);
@@ -54,7 +55,9 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     MeshOptions o;
     o.size = s.size.value_or(0);
     o.sweep_size = s.sweep_size.value_or(0);
+    o.sweep_share = s.sweep_share;
     o.circumferential = s.circumferential.value_or(0);
+    o.chordal = s.chordal;
     o.sweep.radial_layers = s.layers;
     o.sweep.axial_aspect = s.axial_aspect;
     o.pyramids.height_factor = s.pyramid_height;
@@ -65,6 +68,14 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     o.threads = s.threads.value_or(0);
     o.max_elements = s.max_elements.value_or(0);
     return o;
+}
+
+void apply_economy(MeshSettings& s, GivenSettings given) {
+    if (!s.circumferential) s.circumferential = kEconomy.circumferential;
+    s.sweep_share = kEconomy.sweep_share;
+    if (!given.layers) s.layers = kEconomy.layers;
+    if (!given.axial_aspect) s.axial_aspect = kEconomy.axial_aspect;
+    if (!given.chordal) s.chordal = kEconomy.chordal;
 }
 
 std::string stage_names() {

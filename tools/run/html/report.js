@@ -42,6 +42,31 @@
     document.getElementById('table-legend').textContent = data.table_legend;
   }
 
+  // The paper's column beside this mesh's, for one of the paper's three examples.
+  function fillPaperTable() {
+    const paper = report.paper_table1;
+    if (!paper) return;
+    const cell = function (v, key) {
+      if (v === null) return '-';
+      const whole = ['elements', 'tets', 'pyramids', 'hexes', 'nodes', 'all_tet_reference'].indexOf(key) >= 0;
+      return whole ? String(v) : v.toFixed(6);
+    };
+    document.getElementById('paper-title').textContent =
+      "The paper's Table 1, Example " + paper.example + ' (' + paper.preset + '), beside this mesh';
+    const table = document.getElementById('paper-table');
+    const head = document.createElement('tr');
+    ['', 'paper', 'this mesh'].forEach(function (h) { head.appendChild(text('th', h)); });
+    table.appendChild(head);
+    paper.rows.forEach(function (row) {
+      const tr = document.createElement('tr');
+      tr.appendChild(text('td', row.label));
+      tr.appendChild(text('td', cell(row.paper, row.key), 'value'));
+      tr.appendChild(text('td', cell(row.this_mesh, row.key), 'value'));
+      table.appendChild(tr);
+    });
+    document.getElementById('paper-section').hidden = false;
+  }
+
   function drawPhases() {
     const phases = report.phases;
     new Chart(document.getElementById('phases'), {
@@ -190,6 +215,7 @@
 
   fillSummary();
   fillTable();
+  fillPaperTable();
   drawPhases();
   drawHistograms();
   drawView();

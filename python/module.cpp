@@ -37,8 +37,9 @@ bool is_preset(const std::string& name) {
 
 py::object json_object(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
 
-std::unique_ptr<MeshResult> mesh(const py::object& source, std::optional<double> size, std::optional<double> sweep_size,
-                                 std::optional<int> circ, int layers, double axial_aspect, double pyramid_height,
+std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::optional<double> size,
+                                 std::optional<double> sweep_size, std::optional<int> circ, std::optional<int> layers,
+                                 std::optional<double> axial_aspect, std::optional<double> chordal, double pyramid_height,
                                  double gradation, std::optional<int> threads, int tet_parts, int tet_relax,
                                  bool move_apexes, std::optional<double> max_elements, std::optional<int> solid,
                                  const std::string& until,
@@ -47,8 +48,10 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, std::optional<double>
     s.size = size;
     s.sweep_size = sweep_size;
     s.circumferential = circ;
-    s.layers = layers;
-    s.axial_aspect = axial_aspect;
+    if (layers) s.layers = *layers;
+    if (axial_aspect) s.axial_aspect = *axial_aspect;
+    if (chordal) s.chordal = *chordal;
+    if (economy) run::apply_economy(s, {layers.has_value(), axial_aspect.has_value(), chordal.has_value()});
     s.pyramid_height = pyramid_height;
     s.gradation = gradation;
     s.threads = threads;
@@ -125,9 +128,10 @@ PYBIND11_MODULE(tubemesh, m) {
     tp::bind_mesh_result(m);
 
     const run::MeshSettings d;  // the CLI's defaults
-    m.def("mesh", &tp::mesh, py::arg("source") = "paper-ex1", py::kw_only(), py::arg("size") = py::none(),
-          py::arg("sweep_size") = py::none(), py::arg("circ") = py::none(), py::arg("layers") = d.layers,
-          py::arg("axial_aspect") = d.axial_aspect, py::arg("pyramid_height") = d.pyramid_height,
+    m.def("mesh", &tp::mesh, py::arg("source") = "paper-ex1", py::kw_only(), py::arg("economy") = false,
+          py::arg("size") = py::none(), py::arg("sweep_size") = py::none(), py::arg("circ") = py::none(),
+          py::arg("layers") = py::none(), py::arg("axial_aspect") = py::none(), py::arg("chordal") = py::none(),
+          py::arg("pyramid_height") = d.pyramid_height,
           py::arg("gradation") = d.gradation, py::arg("threads") = py::none(), py::arg("tet_parts") = d.tet_parts,
           py::arg("tet_relax") = d.tet_relax, py::arg("move_apexes") = d.move_apexes,
           py::arg("max_elements") = py::none(), py::arg("solid") = py::none(),
@@ -137,8 +141,9 @@ PYBIND11_MODULE(tubemesh, m) {
 The options and defaults are `tubemesh mesh`'s (README, "Command line"); None is automatic:
 size (S: bounding-box diagonal / 25, at least 1.3 St), sweep_size (St: the smallest tube
 diameter, cut by the paper's rules), circ (n: the multiple of 4 nearest 2 pi (r + St/2) / St, at
-least 8), threads (all cores), max_elements (what this machine's memory holds), solid (the file's
-only solid). until: the last stage ('sweep', 'surface', 'pyramids', 'tets'). progress: a callable
+least 8), layers (2), axial_aspect (1.5), chordal (0.008125), threads (all cores), max_elements
+(what this machine's memory holds), solid (the file's only solid). economy=True is --economy: the
+paper's ring (circ 4, layers 2, axial_aspect 2, chordal 0.02, St a share of S) where those are None. until: the last stage ('sweep', 'surface', 'pyramids', 'tets'). progress: a callable
 (phase, done, total), called with the GIL from the meshing threads.
 
 Returns a tubemesh.Mesh. Raises tubemesh.Error with the CLI's one-line message; the GIL is

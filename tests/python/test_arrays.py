@@ -138,3 +138,15 @@ def test_moved_apexes_keep_the_rings_and_the_pyramid_bases():
     assert tet(moved)["min"] >= tet(fixed)["min"]
     assert moved.report["quality"]["pyramid_scaled_jacobian"]["min"] >= min(
         0.5, fixed.report["quality"]["pyramid_scaled_jacobian"]["min"]) - 1e-12
+
+
+def test_economy_is_coarser_and_given_options_win():
+    economy = tubemesh.mesh("paper-ex3", economy=True, threads=1)
+    default = tubemesh.mesh("paper-ex3", threads=1)
+    count = lambda r: len(r.hexes) + len(r.pyramids) + len(r.tets)
+    assert count(economy) < count(default)
+    # 4 nodes around and 2 layers: 8 hexes per station ring; 3 given layers: 12, the axial step
+    # then follows the ring's own cap.
+    assert len(economy.hexes) % 8 == 0
+    layered = tubemesh.mesh("paper-ex3", economy=True, layers=3, threads=1)
+    assert len(layered.hexes) % 12 == 0 and len(layered.hexes) != len(economy.hexes)

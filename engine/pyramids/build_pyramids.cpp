@@ -118,7 +118,7 @@ std::vector<Box> fixed_face_boxes(const HybridMesh& mesh, const PyramidInput& in
 // Appends the used apexes (creation order) and the pyramids (front order) to the mesh and
 // lists the free triangles (reversed: out of the tet region).
 void append_to_mesh(HybridMesh& mesh, std::span<const Front> fronts, const FrontState& state,
-                    std::size_t boundary_count, index_t region, const PyramidOptions& opt, PyramidResult& result) {
+                    std::size_t boundary_count, index_t region, PyramidResult& result) {
     const index_t base = state.mesh_points();
     std::vector<index_t> renumber(state.apexes().size(), kNoIndex);
     result.first_apex = mesh.point_count();
@@ -196,7 +196,7 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     result.stats.verdicts = advance.tally().verdicts;
     if (result.stats.batches > 0) result.stats.batch_mean /= result.stats.batches;
 
-    append_to_mesh(mesh, fronts, state, in.boundary_triangles.size() / 3, in.region, opt, result);
+    append_to_mesh(mesh, fronts, state, in.boundary_triangles.size() / 3, in.region, result);
     return result;
 }
 

@@ -7,7 +7,6 @@
 #include "engine/pyramids/face_tree.hpp"
 #include "engine/pyramids/front_state.hpp"
 #include "engine/pyramids/fronts.hpp"
-#include "engine/pyramids/node_tree.hpp"
 #include "engine/pyramids/visible.hpp"
 
 namespace tubemesh {
@@ -91,14 +90,6 @@ void check_input(const HybridMesh& mesh, const PyramidInput& in, const PyramidOp
             "wedge_wide_shift in [0, 1), apart_lowest in (0, 1], "
             "factors and rounds not negative)");
     check_fronts_distinct(in.front_quads);
-}
-
-std::vector<index_t> fixed_node_ids(std::span<const index_t> quads, std::span<const index_t> triangles) {
-    std::vector<index_t> ids(quads.begin(), quads.end());
-    ids.insert(ids.end(), triangles.begin(), triangles.end());
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return ids;
 }
 
 std::vector<Box> fixed_face_boxes(const HybridMesh& mesh, const PyramidInput& in) {
@@ -185,11 +176,9 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     const Adjacency neighbours = front_neighbours(fronts);
     const std::vector<Box> boxes = fixed_face_boxes(mesh, in);
     const FaceTree face_tree(boxes);
-    const NodeTree node_tree(mesh, fixed_node_ids(in.front_quads, in.boundary_triangles));
     FrontState state(mesh, fronts, in.boundary_triangles);
-    const World world{
-        fronts,    neighbours, face_tree, static_cast<index_t>(in.boundary_triangles.size() / 3), in.obstacle_quads,
-        node_tree, state};
+    const World world{fronts, neighbours, face_tree, static_cast<index_t>(in.boundary_triangles.size() / 3),
+                      in.obstacle_quads, state};
 
     AdvancingFront advance(world, state, opt, result.stats);
     advance.run();

@@ -47,13 +47,6 @@ bool inside_pyramid(const NewPyramid& y, const Vec3& x) {
            orient3d(p[1], p[2], p[3], x) > 0;
 }
 
-bool has_edge(const Visible& vis, index_t u, index_t v) {
-    const index_t a = std::min(u, v), b = std::max(u, v);
-    return std::binary_search(
-        vis.edges.begin(), vis.edges.end(), VisibleEdge{a, b, {}, {}, {}},
-        [](const VisibleEdge& l, const VisibleEdge& r) { return l.a < r.a || (l.a == r.a && l.b < r.b); });
-}
-
 // Existing faces and edges the candidate would reuse (only an existing node can). A repeated
 // face must be the opposite face of a neighbour; then the two pyramids share it.
 bool match_existing(NewPyramid& y, const Visible& vis, const FrontState& state) {
@@ -66,7 +59,7 @@ bool match_existing(NewPyramid& y, const Visible& vis, const FrontState& state) 
         if (same_orientation(state.triangle(owner), t)) return false;
         y.face_new[f] = false;
     }
-    for (int k = 0; k < 4; ++k) y.edge_new[k] = !has_edge(vis, y.node[k], apex);
+    for (int k = 0; k < 4; ++k) y.edge_new[k] = !vis.has_edge(y.node[k], apex);
     return true;
 }
 

@@ -199,27 +199,32 @@ Adjacency front_neighbours(std::span<const Front> fronts) {
 
     const IdealApexes apexes(fronts);
 
-    std::vector<std::vector<index_t>> rows(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    // Rows found block by block, each block's rows back to back in its own buffer; offsets
+    // then place them.
+    constexpr std::size_t kBlock = 256;
+    std::vector<std::vector<index_t>> found((n + kBlock - 1) / kBlock);
+    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t b) {
         std::vector<std::pair<index_t, double>> hits;
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        std::vector<index_t>& out = found[b];
+        for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
             const Front& f = fronts[i];
             const double radius = std::max(f.query_radius + largest_reach, largest_query + f.reach);
             apexes.index.within_unordered(f.ideal, radius, hits);
-            auto& row = rows[i];
+            const std::size_t row = out.size();
             for (const auto& [j, d2] : hits) {
                 if (j == i) continue;
                 const Front& g = fronts[j];
                 const double reach = std::max(f.query_radius + g.reach, g.query_radius + f.reach);
-                if (d2 < reach * reach) row.push_back(j);
+                if (d2 < reach * reach) out.push_back(j);
             }
-            std::sort(row.begin(), row.end());
+            std::sort(out.begin() + static_cast<std::ptrdiff_t>(row), out.end());
+            adj.offset[i + 1] = out.size() - row;
         }
     });
-    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] = adj.offset[i] + rows[i].size();
+    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
     adj.items.resize(adj.offset[n]);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        std::copy(rows[i].begin(), rows[i].end(), adj.items.begin() + static_cast<std::ptrdiff_t>(adj.offset[i]));
+    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t b) {
+        std::copy(found[b].begin(), found[b].end(), adj.items.begin() + static_cast<std::ptrdiff_t>(adj.offset[b * kBlock]));
     });
     return adj;
 }

@@ -1,6 +1,7 @@
 #include "engine/pyramids/visible.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/mesh/edge_key.hpp"
 
@@ -8,11 +9,13 @@ namespace tubemesh::pyramids {
 
 namespace {
 
-// Adds the face when its box comes within the query radius of N.
-void add_face(const Front& f, const index_t* nodes, const Vec3* const* p, int size, FaceRole role, Visible& out) {
+// Adds the face when its box comes within the query radius of N (and within the focus).
+void add_face(const Front& f, const Focus& focus, const index_t* nodes, const Vec3* const* p, int size, FaceRole role,
+              Visible& out) {
     Box box = Box::of(*p[0]);
     for (int k = 1; k < size; ++k) box.add(*p[k]);
     if (box_distance2(box, f.ideal) >= f.query_radius * f.query_radius) return;
+    if (!focus.all && box_distance2(box, focus.box) > focus.margin2) return;
     VisibleFace& face = out.faces.emplace_back();
     face.size = static_cast<std::uint8_t>(size);
     face.role = role;
@@ -24,46 +27,59 @@ void add_face(const Front& f, const index_t* nodes, const Vec3* const* p, int si
 }
 
 // The same for faces whose coordinates must be looked up.
-void add_face(const FrontState& s, const Front& f, const index_t* nodes, int size, FaceRole role, Visible& out) {
+void add_face(const FrontState& s, const Front& f, const Focus& focus, const index_t* nodes, int size, FaceRole role,
+              Visible& out) {
     Vec3 p[4];
     const Vec3* ptr[4];
     for (int k = 0; k < size; ++k) {
         p[k] = s.point(nodes[k]);
         ptr[k] = &p[k];
     }
-    add_face(f, nodes, ptr, size, role, out);
+    add_face(f, focus, nodes, ptr, size, role, out);
 }
 
-void collect_faces(const World& w, index_t i, Visible& out) {
+// The box the fixed faces must overlap: the query ball's, cut to the focus's reach.
+Box query_box(const Front& f, const Focus& focus) {
+    Box q = Box::around(f.ideal, f.query_radius);
+    if (focus.all) return q;
+    const double m = std::sqrt(focus.margin2) * (1 + 1e-9);  // never below the true distance
+    q.lo = max_each(q.lo, focus.box.lo - Vec3{m, m, m});
+    q.hi = min_each(q.hi, focus.box.hi + Vec3{m, m, m});
+    return q;
+}
+
+void collect_faces(const World& w, index_t i, const Focus& focus, Visible& out) {
     const Front& f = w.fronts[i];
     const FrontState& s = w.state;
     const Vec3* own[4] = {&f.corner[0], &f.corner[1], &f.corner[2], &f.corner[3]};
-    add_face(f, f.node.data(), own, 4, FaceRole::Own, out);
+    add_face(f, focus, f.node.data(), own, 4, FaceRole::Own, out);
 
     // Fixed faces: boundary triangles still on the front, obstacle quads.
     out.hits.clear();
-    w.fixed_faces.query(Box::around(f.ideal, f.query_radius), out.stack, out.hits);
+    w.fixed_faces.query(query_box(f, focus), out.stack, out.hits);
     std::sort(out.hits.begin(), out.hits.end());  // the tree's visiting order is not an order to rely on
     const index_t boundary_count = w.boundary_count;
     for (index_t id : out.hits) {
         if (id < boundary_count) {
             if (!s.boundary_free(id)) continue;
             const Triangle t = s.boundary(id);
-            add_face(s, f, t.data(), 3, FaceRole::Front, out);
+            add_face(s, f, focus, t.data(), 3, FaceRole::Front, out);
         } else {
-            add_face(s, f, w.obstacles.data() + 4 * (id - boundary_count), 4, FaceRole::Obstacle, out);
+            add_face(s, f, focus, w.obstacles.data() + 4 * (id - boundary_count), 4, FaceRole::Obstacle, out);
         }
     }
 
     // Neighbour fronts: their quad while pending, their pyramid's free triangles once built.
-    // Both lie in the neighbour's reach ball: skip the neighbour when that misses the query ball.
+    // Both lie in the neighbour's reach ball: skip the neighbour when that misses the query ball
+    // (or its cube the focus).
     for (index_t j : w.neighbours.row(i)) {
         const Front& g = w.fronts[j];
         const double apart = f.query_radius + g.reach;
         if (distance2(f.ideal, g.ideal) >= apart * apart) continue;
+        if (!focus.all && box_distance2(Box::around(g.ideal, g.reach), focus.box) > focus.margin2) continue;
         if (!s.has_pyramid(j)) {
             const Vec3* quad[4] = {&g.corner[0], &g.corner[1], &g.corner[2], &g.corner[3]};
-            add_face(f, g.node.data(), quad, 4, FaceRole::Front, out);
+            add_face(f, focus, g.node.data(), quad, 4, FaceRole::Front, out);
             continue;
         }
         const index_t apex = s.apex(j);
@@ -74,7 +90,7 @@ void collect_faces(const World& w, index_t i, Visible& out) {
             const int next = (side + 1) % 4;
             const index_t nodes[3] = {g.node[side], g.node[next], apex};
             const Vec3* p[3] = {&g.corner[side], &g.corner[next], &top};
-            add_face(f, nodes, p, 3, FaceRole::Front, out);
+            add_face(f, focus, nodes, p, 3, FaceRole::Front, out);
         }
     }
 }
@@ -145,14 +161,15 @@ void collect_edges(Visible& out) {
 // The fixed nodes within reach of N (the front quads' corners and the boundary triangles'
 // nodes) and the apexes there. A corner within reach is one of this front's or a neighbour's
 // (its own front's reach ball holds it too, so the two balls meet); a boundary node within reach
-// lies in the query box, so its triangle is among the face tree's hits. Strictly within the reach.
-void collect_nodes(const World& w, index_t i, Visible& out) {
+// lies in the query box, so its triangle is among the face tree's hits. Strictly within the reach
+// (and with a focus, inside its box: its triangle then overlaps the focus too).
+void collect_nodes(const World& w, index_t i, const Focus& focus, Visible& out) {
     const Front& f = w.fronts[i];
     const FrontState& s = w.state;
     const double reach2 = f.reach * f.reach;
     const auto consider = [&](index_t id, const Vec3& p) {
         const double d2 = distance2(f.ideal, p);
-        if (d2 < reach2) out.nodes.push_back({id, p, d2});
+        if (d2 < reach2 && (focus.all || box_distance2(focus.box, p) <= 0)) out.nodes.push_back({id, p, d2});
     };
     for (int k = 0; k < 4; ++k) consider(f.node[k], f.corner[k]);
     for (index_t id : out.hits) {
@@ -193,14 +210,14 @@ bool Visible::has_edge(index_t a, index_t b) const {
     }
 }
 
-void gather_visible(const World& w, index_t front, Visible& out) {
+void gather_visible(const World& w, index_t front, Visible& out, const Focus& focus) {
     out.faces.clear();
     out.edges.clear();
     out.nodes.clear();
     out.candidates.clear();
-    collect_faces(w, front, out);
+    collect_faces(w, front, focus, out);
     collect_edges(out);
-    collect_nodes(w, front, out);
+    collect_nodes(w, front, focus, out);
 }
 
 }  // namespace tubemesh::pyramids

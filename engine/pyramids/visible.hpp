@@ -83,6 +83,18 @@ struct Visible {
     int edge_bits = 0;
 };
 
-void gather_visible(const World& world, index_t front, Visible& out);
+// What one candidate can fail on: only faces and edges whose boxes come within the distance
+// threshold of its pyramid's box, and only nodes inside that box, are measured by the criteria
+// (criteria.cpp skips everything else by those very box tests), and a new apex reuses no face
+// or edge. `all`: no such narrowing.
+struct Focus {
+    bool all = true;
+    Box box;          // the candidate pyramid's
+    double margin2 = 0;  // the squared distance threshold
+};
+
+// Everything the front's criteria look at, or (with a focus) what one candidate with a new
+// apex can fail on: a subset of the former that gives that candidate the same verdict.
+void gather_visible(const World& world, index_t front, Visible& out, const Focus& focus = {});
 
 }  // namespace tubemesh::pyramids

@@ -26,8 +26,10 @@ struct Box {
         add(b.lo);
         add(b.hi);
     }
+    // Without branches (& not &&): the inner loops test many boxes and half of them pass.
     bool overlaps(const Box& b) const {
-        return lo.x <= b.hi.x && b.lo.x <= hi.x && lo.y <= b.hi.y && b.lo.y <= hi.y && lo.z <= b.hi.z && b.lo.z <= hi.z;
+        return (lo.x <= b.hi.x) & (b.lo.x <= hi.x) & (lo.y <= b.hi.y) & (b.lo.y <= hi.y) & (lo.z <= b.hi.z) &
+               (b.lo.z <= hi.z);
     }
     Vec3 centre() const { return 0.5 * (lo + hi); }
 };
@@ -35,8 +37,10 @@ struct Box {
 // Squared distance between two boxes (0 when they overlap): a lower bound of the distance
 // between anything inside them, so "box distance >= d" proves "distance >= d".
 inline double box_distance2(const Box& a, const Box& b) {
+    // The positive one of the two differences, or 0 where the intervals overlap (both <= 0);
+    // as max operations, which the inner loops run without branches.
     auto gap = [](double alo, double ahi, double blo, double bhi) {
-        return alo > bhi ? alo - bhi : blo > ahi ? blo - ahi : 0.0;
+        return std::max(std::max(alo - bhi, blo - ahi), 0.0);
     };
     const double dx = gap(a.lo.x, a.hi.x, b.lo.x, b.hi.x);
     const double dy = gap(a.lo.y, a.hi.y, b.lo.y, b.hi.y);

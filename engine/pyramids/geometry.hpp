@@ -32,6 +32,10 @@ struct Box {
                (b.lo.z <= hi.z);
     }
     Vec3 centre() const { return 0.5 * (lo + hi); }
+    // p in the closed box: box_distance2(*this, p) == 0.
+    bool contains(const Vec3& p) const {
+        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+    }
 };
 
 // Squared distance between two boxes (0 when they overlap): a lower bound of the distance

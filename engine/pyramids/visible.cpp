@@ -71,19 +71,25 @@ void collect_faces(const World& w, index_t i, const Focus& focus, Visible& out) 
 
     // Neighbour fronts: their quad while pending, their pyramid's free triangles once built.
     // Both lie in the neighbour's reach ball: skip the neighbour when that misses the query ball
-    // (or its cube the focus).
+    // (or, with a focus, when the box of its corners and apex, which holds them, is too far).
     for (index_t j : w.neighbours.row(i)) {
         const Front& g = w.fronts[j];
         const double apart = f.query_radius + g.reach;
         if (distance2(f.ideal, g.ideal) >= apart * apart) continue;
-        if (!focus.all && box_distance2(Box::around(g.ideal, g.reach), focus.box) > focus.margin2) continue;
-        if (!s.has_pyramid(j)) {
+        const bool built = s.has_pyramid(j);
+        const index_t apex = built ? s.apex(j) : kNoIndex;
+        const Vec3 top = built ? s.point(apex) : Vec3{};
+        if (!focus.all) {
+            Box around = Box::of(g.corner[0]);
+            for (int k = 1; k < 4; ++k) around.add(g.corner[k]);
+            if (built) around.add(top);
+            if (box_distance2(around, focus.box) > focus.margin2) continue;
+        }
+        if (!built) {
             const Vec3* quad[4] = {&g.corner[0], &g.corner[1], &g.corner[2], &g.corner[3]};
             add_face(f, focus, g.node.data(), quad, 4, FaceRole::Front, out);
             continue;
         }
-        const index_t apex = s.apex(j);
-        const Vec3 top = s.point(apex);
         for (int side = 0; side < 4; ++side) {
             if (!s.lateral_free(j, side)) continue;
             // Lateral face `side` (front_state.hpp): base edge side -> side + 1, then the apex.
@@ -168,8 +174,9 @@ void collect_nodes(const World& w, index_t i, const Focus& focus, Visible& out) 
     const FrontState& s = w.state;
     const double reach2 = f.reach * f.reach;
     const auto consider = [&](index_t id, const Vec3& p) {
+        if (!focus.all && !focus.box.contains(p)) return;
         const double d2 = distance2(f.ideal, p);
-        if (d2 < reach2 && (focus.all || box_distance2(focus.box, p) <= 0)) out.nodes.push_back({id, p, d2});
+        if (d2 < reach2) out.nodes.push_back({id, p, d2});
     };
     for (int k = 0; k < 4; ++k) consider(f.node[k], f.corner[k]);
     for (index_t id : out.hits) {

@@ -1,6 +1,7 @@
 #include "engine/pyramids/build_pyramids.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 
 #include "engine/pyramids/advancing_front.hpp"
@@ -172,8 +173,10 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     result.first_pyramid = mesh.cell_count(CellKind::Pyramid);
     if (result.stats.fronts == 0) return result;
 
-    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt);
-    const Adjacency neighbours = front_neighbours(fronts);
+    std::unique_ptr<IdealApexes> apexes;
+    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt, &apexes);
+    const Adjacency neighbours = front_neighbours(fronts, apexes.get());
+    apexes.reset();
     const std::vector<Box> boxes = fixed_face_boxes(mesh, in);
     const FaceTree face_tree(boxes);
     FrontState state(mesh, fronts, in.boundary_triangles);

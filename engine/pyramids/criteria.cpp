@@ -189,6 +189,17 @@ bool edge_crosses_face(const NewPyramid& y, const Visible& vis) {
     return false;
 }
 
+// A side of the base quad. It meets the pyramid's lateral faces at their shared nodes only,
+// once its four sub-tets are positive (judge checks that first): each lateral face's plane has
+// the two other corners strictly on one side, those sub-tets' orientations.
+bool base_side(const NewPyramid& y, const VisibleEdge& e) {
+    for (int k = 0; k < 4; ++k) {
+        const index_t u = y.node[k], v = y.node[(k + 1) % 4];
+        if ((e.a == u && e.b == v) || (e.a == v && e.b == u)) return true;
+    }
+    return false;
+}
+
 bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
     for (int f = 0; f < 4; ++f) {
         if (!y.face_new[f]) continue;
@@ -199,7 +210,7 @@ bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
         tbox.add(y.p[g]);
         tbox.add(y.p[4]);
         for (const VisibleEdge& e : vis.edges) {
-            if (!e.box.overlaps(tbox)) continue;
+            if (!e.box.overlaps(tbox) || base_side(y, e)) continue;
             if (improper_contact(e.a, e.pa, e.b, e.pb, it, t, y)) return true;
         }
     }

@@ -33,22 +33,23 @@ WallTarget wall_target(const TubePlan& plan, const Station& st, double w0, doubl
 
 }  // namespace
 
-std::vector<WallCursor> chunk_cursors(const TubePlan& plan, int chunk) {
-    std::vector<WallCursor> out;
+std::vector<WallStart> node0_feet(const TubePlan& plan) {
+    std::vector<WallStart> out(static_cast<std::size_t>(plan.stations()));
     WallCursor cursor;
     for (int i = 1; i + 1 < plan.stations(); ++i) {
-        if (i % chunk == 0) out.push_back(cursor);
         const Station& st = plan.line.stations[static_cast<std::size_t>(i)];
-        plan.wall.project(wall_target(plan, st, plan.weight(0, st.s), plan.weight(1, st.s), 0).point, cursor);
+        const WallFoot foot =
+            plan.wall.project(wall_target(plan, st, plan.weight(0, st.s), plan.weight(1, st.s), 0).point, cursor);
+        out[static_cast<std::size_t>(i)] = {foot, cursor};
     }
     return out;
 }
 
-double place_stations(const TubePlan& plan, int first, int last, const WallCursor& start, std::span<Vec3> nodes) {
+double place_stations(const TubePlan& plan, int first, int last, std::span<const WallStart> node0,
+                      std::span<Vec3> nodes) {
     const std::size_t n = static_cast<std::size_t>(plan.n);
     const std::size_t per_station = (static_cast<std::size_t>(plan.layers) + 1) * n;
     std::vector<WallCursor> cursor(n);
-    cursor[0] = start;
     const auto& depth0 = plan.ends[0].depth;
     const auto& depth1 = plan.ends[1].depth;
     double correction = 0;
@@ -67,9 +68,16 @@ double place_stations(const TubePlan& plan, int first, int last, const WallCurso
         for (std::size_t k = 0; k < n; ++k) {
             const auto [target, dir] = wall_target(plan, st, w0, w1, k);
             const double wall_depth = w0 * depth0[k] + w1 * depth1[k];
-            // A chunk's first station: the neighbour's face and uv are the best guess.
+            // Node 0's foot is found already; at a chunk's first station the neighbour's face
+            // and uv are the best guess for the others.
             if (cursor[k].face < 0 && k > 0) cursor[k] = cursor[k - 1];
-            const WallFoot foot = plan.wall.project(target, cursor[k]);
+            WallFoot foot;
+            if (k == 0) {
+                foot = node0[static_cast<std::size_t>(i)].foot;
+                cursor[0] = node0[static_cast<std::size_t>(i)].cursor;
+            } else {
+                foot = plan.wall.project(target, cursor[k]);
+            }
             correction = std::max(correction, foot.distance);
             out[k] = foot.point;
             for (std::size_t j = 1; j <= static_cast<std::size_t>(plan.layers); ++j) {

@@ -10,6 +10,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Elips.hxx>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -161,6 +162,28 @@ TEST(GeomDiscretize, SplitWallsDiscretiseLikeWholeOnes) {
         EXPECT_LT(norm(a.stations[k].centre - b.stations[k].centre), 1e-6);
     EXPECT_EQ(b.ring1.size(), 8u);
     EXPECT_EQ(b.loop1_edges.size(), 2u);
+}
+
+// Tube stations are evaluated in parallel (each thread on its own copies of the generator
+// lines): the same stations, to the bit, for any thread count.
+TEST(GeomDiscretize, TubeStationsAreTheSameForOneAndTwoThreads) {
+    const TopoDS_Solid solid = test::box_with_pipes(
+        {0, 0, 0}, {1, 1, 1},
+        {test::spline_spine({{-0.1, 0.5, 0.3}, {0.3, 0.6, 0.5}, {0.7, 0.4, 0.6}, {1.1, 0.5, 0.4}})}, kR);
+    const auto stations = [&](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+        const Case c = run(solid, 0.01);
+        return c.geometry.tubes.at(0).stations;
+    };
+    const std::vector<TubeStation> one = stations(1), two = stations(2);
+    ASSERT_GT(one.size(), 100u);  // several parallel tasks' worth
+    ASSERT_EQ(one.size(), two.size());
+    const auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        EXPECT_TRUE(same(one[i].centre, two[i].centre) && same(one[i].tangent, two[i].tangent) &&
+                    same(one[i].reference, two[i].reference) && one[i].radius == two[i].radius)
+            << "station " << i;
+    }
 }
 
 TEST(GeomDiscretize, EdgesAreCutOnceAtSizeS) {

@@ -1,13 +1,13 @@
 #include "engine/pyramids/build_pyramids.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 
 #include "engine/pyramids/advancing_front.hpp"
 #include "engine/pyramids/face_tree.hpp"
 #include "engine/pyramids/front_state.hpp"
 #include "engine/pyramids/fronts.hpp"
-#include "engine/pyramids/node_tree.hpp"
 #include "engine/pyramids/visible.hpp"
 
 namespace tubemesh {
@@ -93,14 +93,6 @@ void check_input(const HybridMesh& mesh, const PyramidInput& in, const PyramidOp
     check_fronts_distinct(in.front_quads);
 }
 
-std::vector<index_t> fixed_node_ids(std::span<const index_t> quads, std::span<const index_t> triangles) {
-    std::vector<index_t> ids(quads.begin(), quads.end());
-    ids.insert(ids.end(), triangles.begin(), triangles.end());
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return ids;
-}
-
 std::vector<Box> fixed_face_boxes(const HybridMesh& mesh, const PyramidInput& in) {
     std::vector<Box> boxes;
     auto add = [&](std::span<const index_t> nodes, std::size_t stride) {
@@ -118,7 +110,7 @@ std::vector<Box> fixed_face_boxes(const HybridMesh& mesh, const PyramidInput& in
 // Appends the used apexes (creation order) and the pyramids (front order) to the mesh and
 // lists the free triangles (reversed: out of the tet region).
 void append_to_mesh(HybridMesh& mesh, std::span<const Front> fronts, const FrontState& state,
-                    std::size_t boundary_count, index_t region, const PyramidOptions& opt, PyramidResult& result) {
+                    std::size_t boundary_count, index_t region, PyramidResult& result) {
     const index_t base = state.mesh_points();
     std::vector<index_t> renumber(state.apexes().size(), kNoIndex);
     result.first_apex = mesh.point_count();
@@ -181,22 +173,22 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     result.first_pyramid = mesh.cell_count(CellKind::Pyramid);
     if (result.stats.fronts == 0) return result;
 
-    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt);
-    const Adjacency neighbours = front_neighbours(fronts);
+    std::unique_ptr<IdealApexes> apexes;
+    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt, &apexes);
+    const Adjacency neighbours = front_neighbours(fronts, apexes.get());
+    apexes.reset();
     const std::vector<Box> boxes = fixed_face_boxes(mesh, in);
     const FaceTree face_tree(boxes);
-    const NodeTree node_tree(mesh, fixed_node_ids(in.front_quads, in.boundary_triangles));
     FrontState state(mesh, fronts, in.boundary_triangles);
-    const World world{
-        fronts,    neighbours, face_tree, static_cast<index_t>(in.boundary_triangles.size() / 3), in.obstacle_quads,
-        node_tree, state};
+    const World world{fronts, neighbours, face_tree, static_cast<index_t>(in.boundary_triangles.size() / 3),
+                      in.obstacle_quads, state};
 
     AdvancingFront advance(world, state, opt, result.stats);
     advance.run();
     result.stats.verdicts = advance.tally().verdicts;
     if (result.stats.batches > 0) result.stats.batch_mean /= result.stats.batches;
 
-    append_to_mesh(mesh, fronts, state, in.boundary_triangles.size() / 3, in.region, opt, result);
+    append_to_mesh(mesh, fronts, state, in.boundary_triangles.size() / 3, in.region, result);
     return result;
 }
 

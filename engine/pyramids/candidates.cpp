@@ -27,6 +27,13 @@ bool try_existing(const Front& f, const Thresholds& t, std::uint8_t how, const V
     return false;
 }
 
+// What the candidate pyramid on f with a new apex at p can fail on (visible.hpp).
+Focus focus_on(const Front& f, const Vec3& p, const Thresholds& t) {
+    Focus focus{false, Box::of(p), t.min_distance2};
+    for (const Vec3& c : f.corner) focus.box.add(c);
+    return focus;
+}
+
 // The try node at Rate: Rate of the way from M to N (on the normal line but for a front
 // placed for a wedge, fronts.hpp).
 Vec3 try_node(const Front& f, double rate) {
@@ -38,16 +45,19 @@ Vec3 try_node(const Front& f, double rate) {
 Choice serve_front(const World& world, index_t front, Pass pass, const PyramidOptions& opt, Visible& vis,
                    Tally& tally) {
     const Front& f = world.fronts[front];
-    gather_visible(world, front, vis);
     Choice choice;
     if (pass == Pass::Normal) {
         const Thresholds t = Thresholds::at(f, opt, 1.0);
+        // The ideal apex, usually taken, on what can fail it alone; then everything.
+        gather_visible(world, front, vis, focus_on(f, f.ideal, t));
         if (try_candidate(f, {kNoIndex, f.ideal}, t, kHowIdeal, vis, world.state, tally, choice)) return choice;
+        gather_visible(world, front, vis);
         if (has_wide(f) && try_candidate(f, {kNoIndex, f.wide}, t, kHowWide, vis, world.state, tally, choice))
             return choice;
         try_existing(f, t, kHowExisting, vis, world.state, tally, choice);
         return choice;
     }
+    gather_visible(world, front, vis);
     for (int step = 0; step < opt.try_nodes; ++step) {
         const int k = pass == Pass::Relaxed ? step + 1 : opt.try_nodes - step;
         const double rate = std::pow(opt.relax_rate, k);

@@ -1,5 +1,8 @@
 #include "engine/pyramids/contacts.hpp"
 
+#include <algorithm>
+
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 
 namespace tubemesh::pyramids {
@@ -17,6 +20,45 @@ bool overlaps_beyond_shared(const Vec3& s, const Vec3& q, const Vec3& b, const V
     return sbq * t >= 0 && sqc * t >= 0;
 }
 
+// Direction s->q makes an obtuse angle with both sides of the proper triangle's angle at s,
+// so it lies outside that angle: inside it, q - s = a (b - s) + c (c - s) with a, c >= 0, and
+// both dot products negative would break Cauchy-Schwarz. Decided in floating point only with
+// a margin (1e-9 relative) far above the rounding of these few operations; false (undecided)
+// otherwise, and for a flat or tiny triangle, which the exact path refuses. On straight rings
+// the ring's edges continue each other in a line, coplanar with the pyramids' lateral faces,
+// and would each take the exact path.
+bool leaves_angle(const Vec3& s, const Vec3& q, const Vec3& b, const Vec3& c) {
+    const Vec3 v = q - s, sb = b - s, sc = c - s;
+    const double vb = dot(v, sb), vc = dot(v, sc);
+    if (!(vb < 0 && vc < 0)) return false;
+    constexpr double kMargin2 = 1e-18;
+    const double vv = norm2(v), bb = norm2(sb), cc = norm2(sc);
+    return vb * vb > kMargin2 * vv * bb && vc * vc > kMargin2 * vv * cc && norm2(cross(sb, sc)) > kMargin2 * bb * cc;
+}
+
+// The closed triangle abc and the segment pq lie on two sides of a plane, the triangle's own or
+// one through an edge perpendicular to it, the segment farther from it than 1e-9 of the scene's
+// size (the largest distance from a): so they do not meet. Rounding in these few operations is
+// below 1e-14 of that size, so the computed planes separate them as the exact ones would. False
+// when undecided, as always for a flat triangle. It spares segment_triangle the exact path for
+// the ring edges that continue a pyramid's base edges in a line, in its lateral faces' planes.
+bool separated(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+    constexpr double kMargin2 = 1e-18;
+    const Vec3 ab = b - a, ac = c - a;
+    const Vec3 n = cross(ab, ac);
+    const double nn = norm2(n);
+    if (!(nn > kMargin2 * norm2(ab) * norm2(ac))) return false;
+    const double scale2 = std::max(std::max(norm2(p - a), norm2(q - a)), std::max(norm2(ab), norm2(ac)));
+    // p and q strictly on the side of the plane through u with normal m that m points away from.
+    const auto behind = [&](const Vec3& u, const Vec3& m) {
+        const double sp = dot(p - u, m), sq = dot(q - u, m), limit = kMargin2 * scale2 * norm2(m);
+        return sp < 0 && sq < 0 && sp * sp > limit && sq * sq > limit;
+    };
+    if (behind(a, n) || behind(a, -1.0 * n)) return true;
+    // n x (edge) points into the triangle from each edge (n = ab x ac: the triangle turns about n).
+    return behind(a, cross(n, ab)) || behind(b, cross(n, c - b)) || behind(c, cross(n, a - c));
+}
+
 }  // namespace
 
 bool improper_contact(index_t ip, const Vec3& p, index_t iq, const Vec3& q, const std::array<index_t, 3>& it,
@@ -30,15 +72,17 @@ bool improper_contact(index_t ip, const Vec3& p, index_t iq, const Vec3& q, cons
     const int cp = corner_of(ip), cq = corner_of(iq);
     if (cp >= 0 && cq >= 0) return false;  // the segment is an edge of the triangle
     const Vec3 &ra = *t[0], &rb = *t[1], &rc = *t[2];
-    if (cp < 0 && cq < 0) return predicates::segment_triangle(p, q, ra, rb, rc) != predicates::Contact::None;
+    if (cp < 0 && cq < 0)
+        return !separated(p, q, ra, rb, rc) && predicates::segment_triangle(p, q, ra, rb, rc) != predicates::Contact::None;
     // Sharing one node, the segment meets the triangle's plane only there unless it lies in
     // that plane; then it meets the triangle elsewhere when it points into it.
     const int shared = cp >= 0 ? cp : cq;
     const Vec3& other = cp >= 0 ? q : p;
-    if (predicates::orient3d(ra, rb, rc, other) != 0) return false;
     const Vec3& s = *t[shared];
     const Vec3& b = *t[(shared + 1) % 3];
     const Vec3& c = *t[(shared + 2) % 3];
+    if (leaves_angle(s, other, b, c)) return false;
+    if (predicates::orient3d(ra, rb, rc, other) != 0) return false;
     for (const Vec3& x : y.p)
         if (predicates::orient3d(ra, rb, rc, x) != 0) return overlaps_beyond_shared(s, other, b, c, x);
     return true;  // a flat triangle: refuse

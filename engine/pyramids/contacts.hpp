@@ -1,7 +1,8 @@
 #pragma once
 // Exact incidence between a segment and a triangle that may share nodes with it, for the
 // criteria "new edges do not intersect visible elements" and "new triangles do not
-// intersect visible edges". Built on the exact predicates only: no tolerance anywhere.
+// intersect visible edges". The answers are exact: decided by the exact predicates, or, where
+// a segment leaves a shared node away from the triangle by far more than rounding, by that.
 #include <array>
 
 #include "engine/core/types.hpp"

@@ -47,13 +47,6 @@ bool inside_pyramid(const NewPyramid& y, const Vec3& x) {
            orient3d(p[1], p[2], p[3], x) > 0;
 }
 
-bool has_edge(const Visible& vis, index_t u, index_t v) {
-    const index_t a = std::min(u, v), b = std::max(u, v);
-    return std::binary_search(
-        vis.edges.begin(), vis.edges.end(), VisibleEdge{a, b, {}, {}, {}},
-        [](const VisibleEdge& l, const VisibleEdge& r) { return l.a < r.a || (l.a == r.a && l.b < r.b); });
-}
-
 // Existing faces and edges the candidate would reuse (only an existing node can). A repeated
 // face must be the opposite face of a neighbour; then the two pyramids share it.
 bool match_existing(NewPyramid& y, const Visible& vis, const FrontState& state) {
@@ -66,7 +59,7 @@ bool match_existing(NewPyramid& y, const Visible& vis, const FrontState& state) 
         if (same_orientation(state.triangle(owner), t)) return false;
         y.face_new[f] = false;
     }
-    for (int k = 0; k < 4; ++k) y.edge_new[k] = !has_edge(vis, y.node[k], apex);
+    for (int k = 0; k < 4; ++k) y.edge_new[k] = !vis.has_edge(y.node[k], apex);
     return true;
 }
 
@@ -196,6 +189,17 @@ bool edge_crosses_face(const NewPyramid& y, const Visible& vis) {
     return false;
 }
 
+// A side of the base quad. It meets the pyramid's lateral faces at their shared nodes only,
+// once its four sub-tets are positive (judge checks that first): each lateral face's plane has
+// the two other corners strictly on one side, those sub-tets' orientations.
+bool base_side(const NewPyramid& y, const VisibleEdge& e) {
+    for (int k = 0; k < 4; ++k) {
+        const index_t u = y.node[k], v = y.node[(k + 1) % 4];
+        if ((e.a == u && e.b == v) || (e.a == v && e.b == u)) return true;
+    }
+    return false;
+}
+
 bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
     for (int f = 0; f < 4; ++f) {
         if (!y.face_new[f]) continue;
@@ -206,7 +210,7 @@ bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
         tbox.add(y.p[g]);
         tbox.add(y.p[4]);
         for (const VisibleEdge& e : vis.edges) {
-            if (!e.box.overlaps(tbox)) continue;
+            if (!e.box.overlaps(tbox) || base_side(y, e)) continue;
             if (improper_contact(e.a, e.pa, e.b, e.pb, it, t, y)) return true;
         }
     }

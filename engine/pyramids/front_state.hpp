@@ -3,6 +3,11 @@
 // apexes created so far, the set of front triangles (boundary triangles and free pyramid
 // triangles) and, per node, how many front faces use it.
 //
+// A front triangle is found through its nodes: a boundary triangle through the rows of its
+// smallest node, a pyramid's lateral face through the fronts that have one of its nodes as a
+// corner (two of its three nodes are). Those rows are built once, so a commit writes a few
+// per-front entries and nothing is hashed; a new apex is in no triangle yet and needs no search.
+//
 // Changed only between batches, by one thread (add_pyramid, remove_pyramid); read by many
 // threads while a batch is evaluated. New apexes are staged here and reach the mesh only
 // when the run has succeeded, so a drawback that deletes a pyramid leaves no orphan point
@@ -10,7 +15,6 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -110,15 +114,9 @@ private:
         index_t a, b, c;  // sorted
         bool operator==(const Key&) const = default;
     };
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const {
-            std::uint64_t h = k.a * 0x9E3779B97F4A7C15ull;
-            h ^= (h >> 29) + k.b * 0xBF58476D1CE4E5B9ull;
-            h ^= (h >> 31) + k.c * 0x94D049BB133111EBull;
-            return static_cast<std::size_t>(h ^ (h >> 32));
-        }
-    };
     static Key key(const Triangle& t);
+    // The owner of the front triangle with key k, but none of front `skip`'s faces.
+    index_t find(const Key& k, index_t skip) const;
     void set_partner(index_t owner, index_t partner);
     void count(const Triangle& t, int delta);
 
@@ -133,7 +131,8 @@ private:
     std::vector<std::array<index_t, 4>> partner_;  // per front and lateral face: owner it cancels
     std::vector<Triangle> boundary_;
     std::vector<index_t> boundary_partner_;
-    std::unordered_map<Key, index_t, KeyHash> faces_;
+    Adjacency boundary_at_;  // mesh node -> boundary triangles whose smallest node it is
+    Adjacency corner_of_;    // mesh node -> fronts with it as a corner
 };
 
 }  // namespace tubemesh::pyramids

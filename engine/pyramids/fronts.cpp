@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
 
-#include "engine/mesh/point_index.hpp"
 #include "engine/pyramids/wedge.hpp"
 #include "engine/quality/quality.hpp"
 
@@ -93,21 +93,6 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     return f;
 }
 
-// The fronts' ideal apexes in a point index (which reads coordinate arrays: hence the copy).
-struct IdealApexes {
-    std::vector<double> x, y, z;
-    PointIndex index;
-    explicit IdealApexes(std::span<const Front> fronts)
-        : x(coordinate(fronts, &Vec3::x)), y(coordinate(fronts, &Vec3::y)), z(coordinate(fronts, &Vec3::z)),
-          index(x, y, z) {}
-    static std::vector<double> coordinate(std::span<const Front> fronts, double Vec3::*c) {
-        std::vector<double> out;
-        out.reserve(fronts.size());
-        for (const Front& f : fronts) out.push_back(f.ideal.*c);
-        return out;
-    }
-};
-
 bool shares_node(const Front& f, const Front& g) {
     for (index_t a : f.node)
         for (index_t b : g.node)
@@ -134,13 +119,12 @@ double apart_scale(const Vec3& a, const Vec3& b, double want, double lowest) {
 // Per front, the scale of its ideal height that PyramidOptions::apart_factor asks for (1:
 // none), decided from the unscaled fronts only, so it does not depend on the order of work.
 // A front with an apex placed for a wedge keeps it, and the fronts near it see it there.
-std::vector<double> apart_scales(std::span<const Front> fronts, const PyramidOptions& opt) {
+std::vector<double> apart_scales(std::span<const Front> fronts, const IdealApexes& apexes, const PyramidOptions& opt) {
     const std::size_t n = fronts.size();
     std::vector<double> scale(n, 1.0);
     if (!(opt.apart_factor > 0) || n < 2) return scale;
     double largest_h = 0;
     for (const Front& f : fronts) largest_h = std::max(largest_h, f.h);
-    const IdealApexes apexes(fronts);
     const auto keeps_apex = [](const Front& f) { return f.wedge || has_wide(f); };
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::vector<std::pair<index_t, double>> hits;
@@ -168,8 +152,20 @@ std::vector<double> apart_scales(std::span<const Front> fronts, const PyramidOpt
 
 }  // namespace
 
+IdealApexes::IdealApexes(std::span<const Front> fronts)
+    : x(coordinate(fronts, &Vec3::x)), y(coordinate(fronts, &Vec3::y)), z(coordinate(fronts, &Vec3::z)),
+      index(x, y, z) {}
+
+std::vector<double> IdealApexes::coordinate(std::span<const Front> fronts, double Vec3::*c) {
+    std::vector<double> out;
+    out.reserve(fronts.size());
+    for (const Front& f : fronts) out.push_back(f.ideal.*c);
+    return out;
+}
+
 std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
-                               std::span<const index_t> boundary_triangles, const PyramidOptions& opt) {
+                               std::span<const index_t> boundary_triangles, const PyramidOptions& opt,
+                               std::unique_ptr<IdealApexes>* apexes) {
     // Without wedge placement nobody asks which quad edges lie on a boundary triangle.
     const BoundaryEdges boundary(opt.wedge_degrees > 0 ? boundary_triangles : std::span<const index_t>{});
     const std::size_t n = quads.size() / 4;
@@ -178,15 +174,20 @@ std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> 
         fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt);
     });
     // Facing fronts lowered together (PyramidOptions::apart_factor).
-    const std::vector<double> scale = apart_scales(fronts, opt);
+    auto index = std::make_unique<IdealApexes>(fronts);
+    const std::vector<double> scale = apart_scales(fronts, *index, opt);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         if (scale[i] < 1.0)
             fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt, scale[i]);
     });
+    if (apexes) {
+        const bool lowered = std::any_of(scale.begin(), scale.end(), [](double l) { return l < 1.0; });
+        *apexes = lowered ? std::make_unique<IdealApexes>(fronts) : std::move(index);
+    }
     return fronts;
 }
 
-Adjacency front_neighbours(std::span<const Front> fronts) {
+Adjacency front_neighbours(std::span<const Front> fronts, const IdealApexes* apexes) {
     Adjacency adj;
     const std::size_t n = fronts.size();
     adj.offset.assign(n + 1, 0);
@@ -197,29 +198,35 @@ Adjacency front_neighbours(std::span<const Front> fronts) {
         largest_reach = std::max(largest_reach, f.reach);
     }
 
-    const IdealApexes apexes(fronts);
+    std::unique_ptr<IdealApexes> own;
+    if (!apexes) apexes = (own = std::make_unique<IdealApexes>(fronts)).get();
 
-    std::vector<std::vector<index_t>> rows(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    // Rows found block by block, each block's rows back to back in its own buffer; offsets
+    // then place them.
+    constexpr std::size_t kBlock = 256;
+    std::vector<std::vector<index_t>> found((n + kBlock - 1) / kBlock);
+    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t b) {
         std::vector<std::pair<index_t, double>> hits;
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        std::vector<index_t>& out = found[b];
+        for (std::size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
             const Front& f = fronts[i];
             const double radius = std::max(f.query_radius + largest_reach, largest_query + f.reach);
-            apexes.index.within_unordered(f.ideal, radius, hits);
-            auto& row = rows[i];
+            apexes->index.within_unordered(f.ideal, radius, hits);
+            const std::size_t row = out.size();
             for (const auto& [j, d2] : hits) {
                 if (j == i) continue;
                 const Front& g = fronts[j];
                 const double reach = std::max(f.query_radius + g.reach, g.query_radius + f.reach);
-                if (d2 < reach * reach) row.push_back(j);
+                if (d2 < reach * reach) out.push_back(j);
             }
-            std::sort(row.begin(), row.end());
+            std::sort(out.begin() + static_cast<std::ptrdiff_t>(row), out.end());
+            adj.offset[i + 1] = out.size() - row;
         }
     });
-    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] = adj.offset[i] + rows[i].size();
+    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
     adj.items.resize(adj.offset[n]);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        std::copy(rows[i].begin(), rows[i].end(), adj.items.begin() + static_cast<std::ptrdiff_t>(adj.offset[i]));
+    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t b) {
+        std::copy(found[b].begin(), found[b].end(), adj.items.begin() + static_cast<std::ptrdiff_t>(adj.offset[b * kBlock]));
     });
     return adj;
 }

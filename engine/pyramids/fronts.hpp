@@ -3,11 +3,13 @@
 // size h, ideal apex N and the radii that bound what it may build and what it must look at.
 // And the neighbour graph: which fronts can see each other's work.
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
+#include "engine/mesh/point_index.hpp"
 #include "engine/pyramids/build_pyramids.hpp"
 #include "engine/pyramids/geometry.hpp"
 
@@ -53,10 +55,20 @@ inline bool has_wide(const Front& f) {
     return f.wide.x != f.ideal.x || f.wide.y != f.ideal.y || f.wide.z != f.ideal.z;
 }
 
+// The fronts' ideal apexes in a point index (which reads coordinate arrays: hence the copy).
+struct IdealApexes {
+    std::vector<double> x, y, z;
+    PointIndex index;
+    explicit IdealApexes(std::span<const Front> fronts);
+    static std::vector<double> coordinate(std::span<const Front> fronts, double Vec3::*c);
+};
+
 // Throws tubemesh::Error for a degenerate quad (zero area or zero edge length).
-// boundary_triangles (3 ids each) tell which quad edges lie on a boundary face.
+// boundary_triangles (3 ids each) tell which quad edges lie on a boundary face. With `apexes`,
+// also the index of the fronts' ideal apexes (the one the lowering used when it lowered none).
 std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
-                               std::span<const index_t> boundary_triangles, const PyramidOptions& opt);
+                               std::span<const index_t> boundary_triangles, const PyramidOptions& opt,
+                               std::unique_ptr<IdealApexes>* apexes = nullptr);
 
 // Compressed rows: row i is items[offset[i] .. offset[i+1]).
 struct Adjacency {
@@ -70,6 +82,7 @@ struct Adjacency {
 // ball, so fronts that are not neighbours neither see nor touch each other's pyramids: they
 // can be served concurrently, and the pyramids a front can see are those of its neighbours.
 // Rows sorted by front index.
-Adjacency front_neighbours(std::span<const Front> fronts);
+// `apexes`: the fronts' IdealApexes when at hand (built here otherwise).
+Adjacency front_neighbours(std::span<const Front> fronts, const IdealApexes* apexes = nullptr);
 
 }  // namespace tubemesh::pyramids

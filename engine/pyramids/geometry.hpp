@@ -26,17 +26,25 @@ struct Box {
         add(b.lo);
         add(b.hi);
     }
+    // Without branches (& not &&): the inner loops test many boxes and half of them pass.
     bool overlaps(const Box& b) const {
-        return lo.x <= b.hi.x && b.lo.x <= hi.x && lo.y <= b.hi.y && b.lo.y <= hi.y && lo.z <= b.hi.z && b.lo.z <= hi.z;
+        return (lo.x <= b.hi.x) & (b.lo.x <= hi.x) & (lo.y <= b.hi.y) & (b.lo.y <= hi.y) & (lo.z <= b.hi.z) &
+               (b.lo.z <= hi.z);
     }
     Vec3 centre() const { return 0.5 * (lo + hi); }
+    // p in the closed box: box_distance2(*this, p) == 0.
+    bool contains(const Vec3& p) const {
+        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+    }
 };
 
 // Squared distance between two boxes (0 when they overlap): a lower bound of the distance
 // between anything inside them, so "box distance >= d" proves "distance >= d".
 inline double box_distance2(const Box& a, const Box& b) {
+    // The positive one of the two differences, or 0 where the intervals overlap (both <= 0);
+    // as max operations, which the inner loops run without branches.
     auto gap = [](double alo, double ahi, double blo, double bhi) {
-        return alo > bhi ? alo - bhi : blo > ahi ? blo - ahi : 0.0;
+        return std::max(std::max(alo - bhi, blo - ahi), 0.0);
     };
     const double dx = gap(a.lo.x, a.hi.x, b.lo.x, b.hi.x);
     const double dy = gap(a.lo.y, a.hi.y, b.lo.y, b.hi.y);

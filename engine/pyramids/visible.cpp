@@ -1,6 +1,7 @@
 #include "engine/pyramids/visible.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/mesh/edge_key.hpp"
 
@@ -8,11 +9,13 @@ namespace tubemesh::pyramids {
 
 namespace {
 
-// Adds the face when its box comes within the query radius of N.
-void add_face(const Front& f, const index_t* nodes, const Vec3* const* p, int size, FaceRole role, Visible& out) {
+// Adds the face when its box comes within the query radius of N (and within the focus).
+void add_face(const Front& f, const Focus& focus, const index_t* nodes, const Vec3* const* p, int size, FaceRole role,
+              Visible& out) {
     Box box = Box::of(*p[0]);
     for (int k = 1; k < size; ++k) box.add(*p[k]);
     if (box_distance2(box, f.ideal) >= f.query_radius * f.query_radius) return;
+    if (!focus.all && box_distance2(box, focus.box) > focus.margin2) return;
     VisibleFace& face = out.faces.emplace_back();
     face.size = static_cast<std::uint8_t>(size);
     face.role = role;
@@ -24,109 +27,168 @@ void add_face(const Front& f, const index_t* nodes, const Vec3* const* p, int si
 }
 
 // The same for faces whose coordinates must be looked up.
-void add_face(const FrontState& s, const Front& f, const index_t* nodes, int size, FaceRole role, Visible& out) {
+void add_face(const FrontState& s, const Front& f, const Focus& focus, const index_t* nodes, int size, FaceRole role,
+              Visible& out) {
     Vec3 p[4];
     const Vec3* ptr[4];
     for (int k = 0; k < size; ++k) {
         p[k] = s.point(nodes[k]);
         ptr[k] = &p[k];
     }
-    add_face(f, nodes, ptr, size, role, out);
+    add_face(f, focus, nodes, ptr, size, role, out);
 }
 
-void collect_faces(const World& w, index_t i, Visible& out) {
+// The box the fixed faces must overlap: the query ball's, cut to the focus's reach.
+Box query_box(const Front& f, const Focus& focus) {
+    Box q = Box::around(f.ideal, f.query_radius);
+    if (focus.all) return q;
+    const double m = std::sqrt(focus.margin2) * (1 + 1e-9);  // never below the true distance
+    q.lo = max_each(q.lo, focus.box.lo - Vec3{m, m, m});
+    q.hi = min_each(q.hi, focus.box.hi + Vec3{m, m, m});
+    return q;
+}
+
+void collect_faces(const World& w, index_t i, const Focus& focus, Visible& out) {
     const Front& f = w.fronts[i];
     const FrontState& s = w.state;
     const Vec3* own[4] = {&f.corner[0], &f.corner[1], &f.corner[2], &f.corner[3]};
-    add_face(f, f.node.data(), own, 4, FaceRole::Own, out);
+    add_face(f, focus, f.node.data(), own, 4, FaceRole::Own, out);
 
     // Fixed faces: boundary triangles still on the front, obstacle quads.
     out.hits.clear();
-    w.fixed_faces.query(Box::around(f.ideal, f.query_radius), out.stack, out.hits);
+    w.fixed_faces.query(query_box(f, focus), out.stack, out.hits);
     std::sort(out.hits.begin(), out.hits.end());  // the tree's visiting order is not an order to rely on
     const index_t boundary_count = w.boundary_count;
     for (index_t id : out.hits) {
         if (id < boundary_count) {
             if (!s.boundary_free(id)) continue;
             const Triangle t = s.boundary(id);
-            add_face(s, f, t.data(), 3, FaceRole::Front, out);
+            add_face(s, f, focus, t.data(), 3, FaceRole::Front, out);
         } else {
-            add_face(s, f, w.obstacles.data() + 4 * (id - boundary_count), 4, FaceRole::Obstacle, out);
+            add_face(s, f, focus, w.obstacles.data() + 4 * (id - boundary_count), 4, FaceRole::Obstacle, out);
         }
     }
 
     // Neighbour fronts: their quad while pending, their pyramid's free triangles once built.
-    // Both lie in the neighbour's reach ball: skip the neighbour when that misses the query ball.
+    // Both lie in the neighbour's reach ball: skip the neighbour when that misses the query ball
+    // (or, with a focus, when the box of its corners and apex, which holds them, is too far).
     for (index_t j : w.neighbours.row(i)) {
         const Front& g = w.fronts[j];
         const double apart = f.query_radius + g.reach;
         if (distance2(f.ideal, g.ideal) >= apart * apart) continue;
-        if (!s.has_pyramid(j)) {
+        const bool built = s.has_pyramid(j);
+        const index_t apex = built ? s.apex(j) : kNoIndex;
+        const Vec3 top = built ? s.point(apex) : Vec3{};
+        if (!focus.all) {
+            Box around = Box::of(g.corner[0]);
+            for (int k = 1; k < 4; ++k) around.add(g.corner[k]);
+            if (built) around.add(top);
+            if (box_distance2(around, focus.box) > focus.margin2) continue;
+        }
+        if (!built) {
             const Vec3* quad[4] = {&g.corner[0], &g.corner[1], &g.corner[2], &g.corner[3]};
-            add_face(f, g.node.data(), quad, 4, FaceRole::Front, out);
+            add_face(f, focus, g.node.data(), quad, 4, FaceRole::Front, out);
             continue;
         }
-        const index_t apex = s.apex(j);
-        const Vec3 top = s.point(apex);
         for (int side = 0; side < 4; ++side) {
             if (!s.lateral_free(j, side)) continue;
             // Lateral face `side` (front_state.hpp): base edge side -> side + 1, then the apex.
             const int next = (side + 1) % 4;
             const index_t nodes[3] = {g.node[side], g.node[next], apex};
             const Vec3* p[3] = {&g.corner[side], &g.corner[next], &top};
-            add_face(f, nodes, p, 3, FaceRole::Front, out);
+            add_face(f, focus, nodes, p, 3, FaceRole::Front, out);
         }
     }
 }
 
-// Every edge of the visible faces once, sorted by (a, b). Sorted through 64-bit keys: the
-// edge records are large to move.
+std::size_t edge_hash(std::uint64_t key, int bits) {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+}
+
+// Starts a gather: a new stamp, and an edge table with room for `edges` keys at most half full.
+void new_stamp(Visible& out, std::size_t edges) {
+    if (++out.stamp == 0) {  // wrapped: every old mark could match again
+        std::fill(out.base_mark.begin(), out.base_mark.end(), 0);
+        std::fill(out.edge_mark.begin(), out.edge_mark.end(), 0);
+        out.stamp = 1;
+    }
+    if (2 * edges > out.edge_mark.size()) {
+        while ((std::size_t{1} << out.edge_bits) < 2 * edges) ++out.edge_bits;
+        out.edge_slot.assign(std::size_t{1} << out.edge_bits, 0);
+        out.edge_mark.assign(std::size_t{1} << out.edge_bits, 0);
+    }
+}
+
+// True when the key was not in the table yet (and now is).
+bool insert_edge(Visible& out, std::uint64_t key) {
+    const std::size_t mask = out.edge_mark.size() - 1;
+    for (std::size_t i = edge_hash(key, out.edge_bits);; i = (i + 1) & mask) {
+        if (out.edge_mark[i] != out.stamp) {
+            out.edge_mark[i] = out.stamp;
+            out.edge_slot[i] = key;
+            return true;
+        }
+        if (out.edge_slot[i] == key) return false;
+    }
+}
+
+void mark_base(Visible& out, index_t n) {
+    if (n >= out.base_mark.size()) out.base_mark.resize(std::size_t{n} + 1 + out.base_mark.size() / 2, 0);
+    out.base_mark[n] = out.stamp;
+}
+
+// Every edge of the visible faces once, with whether it touches the base's neighbourhood.
 void collect_edges(Visible& out) {
-    out.base_ring.clear();
-    out.edge_keys.clear();
-    for (std::size_t i = 0; i < out.faces.size(); ++i) {
-        const VisibleFace& face = out.faces[i];
-        if (face.at_base) out.base_ring.insert(out.base_ring.end(), face.node.begin(), face.node.begin() + face.size);
+    std::size_t sides = 0;
+    for (const VisibleFace& face : out.faces) sides += face.size;
+    new_stamp(out, sides);
+    for (const VisibleFace& face : out.faces)
+        if (face.at_base)
+            for (int k = 0; k < face.size; ++k) mark_base(out, face.node[k]);
+    const auto near_base = [&](index_t n) { return n < out.base_mark.size() && out.base_mark[n] == out.stamp; };
+    for (const VisibleFace& face : out.faces) {
         for (int k = 0; k < face.size; ++k) {
-            const index_t u = face.node[k], v = face.node[(k + 1) % face.size];
-            const std::uint64_t key = edge_key(u, v);
-            out.edge_keys.push_back({key, static_cast<index_t>(4 * i + static_cast<std::size_t>(k))});
+            const int l = k + 1 == face.size ? 0 : k + 1;
+            if (!insert_edge(out, edge_key(face.node[k], face.node[l]))) continue;
+            VisibleEdge e;
+            const bool swap = face.node[l] < face.node[k];
+            e.a = swap ? face.node[l] : face.node[k];
+            e.b = swap ? face.node[k] : face.node[l];
+            e.pa = swap ? face.p[l] : face.p[k];
+            e.pb = swap ? face.p[k] : face.p[l];
+            e.box = Box::of(e.pa);
+            e.box.add(e.pb);
+            e.near_base = near_base(e.a) || near_base(e.b);
+            out.edges.push_back(e);
         }
-    }
-    std::sort(out.base_ring.begin(), out.base_ring.end());
-    auto near_base = [&](index_t n) { return std::binary_search(out.base_ring.begin(), out.base_ring.end(), n); };
-    std::sort(out.edge_keys.begin(), out.edge_keys.end());
-    for (std::size_t n = 0; n < out.edge_keys.size(); ++n) {
-        const auto [key, slot] = out.edge_keys[n];
-        if (n > 0 && out.edge_keys[n - 1].first == key) continue;
-        const VisibleFace& face = out.faces[slot / 4];
-        const int k = static_cast<int>(slot % 4), l = (k + 1) % face.size;
-        VisibleEdge e;
-        const bool swap = face.node[l] < face.node[k];
-        e.a = swap ? face.node[l] : face.node[k];
-        e.b = swap ? face.node[k] : face.node[l];
-        e.pa = swap ? face.p[l] : face.p[k];
-        e.pb = swap ? face.p[k] : face.p[l];
-        e.box = Box::of(e.pa);
-        e.box.add(e.pb);
-        e.near_base = near_base(e.a) || near_base(e.b);
-        out.edges.push_back(e);
     }
 }
 
-void collect_nodes(const World& w, index_t i, Visible& out) {
+// The fixed nodes within reach of N (the front quads' corners and the boundary triangles'
+// nodes) and the apexes there. A corner within reach is one of this front's or a neighbour's
+// (its own front's reach ball holds it too, so the two balls meet); a boundary node within reach
+// lies in the query box, so its triangle is among the face tree's hits. Strictly within the reach
+// (and with a focus, inside its box: its triangle then overlaps the focus too).
+void collect_nodes(const World& w, index_t i, const Focus& focus, Visible& out) {
     const Front& f = w.fronts[i];
     const FrontState& s = w.state;
-    w.fixed_nodes.within(f.ideal, f.reach, out.kd);
-    for (const auto& [id, d2] : out.kd) out.nodes.push_back({id, s.point(id), d2});
-    // Apexes are not in the k-d tree; every apex a front can see belongs to a neighbour.
     const double reach2 = f.reach * f.reach;
+    const auto consider = [&](index_t id, const Vec3& p) {
+        if (!focus.all && !focus.box.contains(p)) return;
+        const double d2 = distance2(f.ideal, p);
+        if (d2 < reach2) out.nodes.push_back({id, p, d2});
+    };
+    for (int k = 0; k < 4; ++k) consider(f.node[k], f.corner[k]);
+    for (index_t id : out.hits) {
+        if (id >= w.boundary_count) break;  // obstacle quads (sorted after): their nodes are no candidates
+        const Triangle t = s.boundary(id);
+        for (index_t n : t) consider(n, s.point(n));
+    }
     for (index_t j : w.neighbours.row(i)) {
-        if (!s.has_pyramid(j)) continue;
-        const index_t a = s.apex(j);
-        const Vec3 p = s.point(a);
-        const double d2 = distance2(p, f.ideal);
-        if (d2 < reach2) out.nodes.push_back({a, p, d2});
+        const Front& g = w.fronts[j];
+        for (int k = 0; k < 4; ++k) consider(g.node[k], g.corner[k]);
+        // Apexes: every apex a front can see belongs to a neighbour.
+        if (s.has_pyramid(j)) consider(s.apex(j), s.point(s.apex(j)));
     }
     std::sort(out.nodes.begin(), out.nodes.end(), [](const NearNode& l, const NearNode& r) { return l.id < r.id; });
     out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end(),
@@ -145,14 +207,24 @@ void collect_nodes(const World& w, index_t i, Visible& out) {
 
 }  // namespace
 
-void gather_visible(const World& w, index_t front, Visible& out) {
+bool Visible::has_edge(index_t a, index_t b) const {
+    if (edge_mark.empty()) return false;
+    const std::uint64_t key = edge_key(a, b);
+    const std::size_t mask = edge_mark.size() - 1;
+    for (std::size_t i = edge_hash(key, edge_bits);; i = (i + 1) & mask) {
+        if (edge_mark[i] != stamp) return false;
+        if (edge_slot[i] == key) return true;
+    }
+}
+
+void gather_visible(const World& w, index_t front, Visible& out, const Focus& focus) {
     out.faces.clear();
     out.edges.clear();
     out.nodes.clear();
     out.candidates.clear();
-    collect_faces(w, front, out);
+    collect_faces(w, front, focus, out);
     collect_edges(out);
-    collect_nodes(w, front, out);
+    collect_nodes(w, front, focus, out);
 }
 
 }  // namespace tubemesh::pyramids

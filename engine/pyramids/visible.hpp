@@ -10,7 +10,6 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -18,7 +17,6 @@
 #include "engine/pyramids/front_state.hpp"
 #include "engine/pyramids/fronts.hpp"
 #include "engine/pyramids/geometry.hpp"
-#include "engine/pyramids/node_tree.hpp"
 
 namespace tubemesh::pyramids {
 
@@ -61,22 +59,42 @@ struct World {
     const FaceTree& fixed_faces;  // ids [0, boundary_count): boundary triangles, then obstacle quads
     index_t boundary_count;
     std::span<const index_t> obstacles;  // 4 per quad
-    const NodeTree& fixed_nodes;
     const FrontState& state;
 };
 
 // Per-thread scratch, reused from front to front (no allocation once warm).
 struct Visible {
     std::vector<VisibleFace> faces;
-    std::vector<VisibleEdge> edges;    // sorted by (a, b), unique
+    std::vector<VisibleEdge> edges;    // each once, in the order the faces first name them
     std::vector<NearNode> nodes;       // within reach of N: may lie inside a new pyramid
     std::vector<NearNode> candidates;  // on the front, within the candidate radius, nearest first
-    std::vector<index_t> hits, stack;
-    std::vector<std::pair<std::uint64_t, index_t>> edge_keys;  // (edge key, 4 face + side)
-    std::vector<index_t> base_ring;                            // nodes of the faces at the base, sorted
-    std::vector<std::pair<index_t, double>> kd;
+    std::vector<index_t> hits, stack;  // fixed faces near N, sorted; the face tree's stack
+
+    // An edge (a, b) of the visible faces (either order).
+    bool has_edge(index_t a, index_t b) const;
+
+    // Marks of the last gather, valid where equal to `stamp` (so nothing is cleared between
+    // fronts): per node id, the node belongs to a face at the base; per slot of an open-addressing
+    // table of edge keys, the slot holds an edge.
+    std::uint32_t stamp = 0;
+    std::vector<std::uint32_t> base_mark;
+    std::vector<std::uint64_t> edge_slot;
+    std::vector<std::uint32_t> edge_mark;
+    int edge_bits = 0;
 };
 
-void gather_visible(const World& world, index_t front, Visible& out);
+// What one candidate can fail on: only faces and edges whose boxes come within the distance
+// threshold of its pyramid's box, and only nodes inside that box, are measured by the criteria
+// (criteria.cpp skips everything else by those very box tests), and a new apex reuses no face
+// or edge. `all`: no such narrowing.
+struct Focus {
+    bool all = true;
+    Box box;          // the candidate pyramid's
+    double margin2 = 0;  // the squared distance threshold
+};
+
+// Everything the front's criteria look at, or (with a focus) what one candidate with a new
+// apex can fail on: a subset of the former that gives that candidate the same verdict.
+void gather_visible(const World& world, index_t front, Visible& out, const Focus& focus = {});
 
 }  // namespace tubemesh::pyramids

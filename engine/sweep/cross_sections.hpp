@@ -12,8 +12,21 @@ namespace tubemesh::sweep {
 // sections; the others place node (j, k) at
 //   wall foot of (centre + radius·dir_k + w·depth_0k·tangent), + offsets[j]·dir_k
 //   + w·(depth_jk − depth_0k)·tangent,
-// summing w·depth over both ends. A call starts its wall projections afresh, so the result
-// does not depend on how the stations are split between calls.
-double place_stations(const TubePlan& plan, int first, int last, std::span<Vec3> nodes);
+// summing w·depth over both ends. Node 0's wall feet come from node0_feet; the other nodes'
+// projections start from their neighbour's foot at a call's first station, from their own at
+// the previous station after that.
+struct WallStart {
+    WallFoot foot;
+    WallCursor cursor;  // after the projection
+};
+double place_stations(const TubePlan& plan, int first, int last, std::span<const WallStart> node0,
+                      std::span<Vec3> nodes);
+
+// Node 0's wall foot at every station but the two ends (index = station), found by following
+// node 0 along the tube from station 1, each foot the hint for the next. One hinted projection
+// a station where a call of place_stations starting afresh would need a global search for
+// its first (on a long B-spline wall those cost milliseconds each), and the nodes do not
+// depend on how the stations are split between calls.
+std::vector<WallStart> node0_feet(const TubePlan& plan);
 
 }  // namespace tubemesh::sweep

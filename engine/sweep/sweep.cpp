@@ -78,11 +78,15 @@ SweepResult sweep_tubes(HybridMesh& mesh, const std::vector<TubeData>& tubes, co
     for (std::size_t t = 0; t < tubes.size(); ++t)
         nodes[t].resize(static_cast<std::size_t>(plans[t].stations()) * static_cast<std::size_t>(plans[t].layers + 1) *
                         static_cast<std::size_t>(plans[t].n));
+    std::vector<std::vector<sweep::WallStart>> node0(tubes.size());
+    rethrow_first(for_each_guarded(tubes.size(), [&](std::size_t t) { node0[t] = sweep::node0_feet(plans[t]); }),
+                  [](std::size_t t) { return t; }, tubes);
     std::vector<double> correction(chunks.size(), 0.0);
     rethrow_first(for_each_guarded(chunks.size(),
                                    [&](std::size_t c) {
                                        const sweep::StationChunk& ch = chunks[c];
-                                       correction[c] = sweep::place_stations(plans[ch.tube], ch.first, ch.last, nodes[ch.tube]);
+                                       correction[c] = sweep::place_stations(plans[ch.tube], ch.first, ch.last,
+                                                                             node0[ch.tube], nodes[ch.tube]);
                                    }),
                   tube_of_chunk, tubes);
 

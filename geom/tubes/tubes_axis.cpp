@@ -1,5 +1,9 @@
 #include "geom/tubes/tubes_axis.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,6 +21,8 @@ constexpr double kSagittaFraction = 0.01;
 constexpr int kMaxRefinement = 10;
 // Farther than this many radii from line 0's point, a line's point is on another run of it.
 constexpr double kMaxSectionSpread = 4;
+// Stations per parallel task: a station costs some tens of microseconds.
+constexpr int kStationsPerTask = 32;
 
 using Points = std::array<GeneratorPoint, 4>;
 
@@ -232,23 +238,37 @@ AxisSample TubeAxis::section(double sigma0, std::array<double, 3>& sigmas) const
 }
 
 std::vector<AxisSample> TubeAxis::stations(int segments) const {
-    std::vector<AxisSample> out;
+    std::vector<AxisSample> out(static_cast<std::size_t>(std::max(segments, 1)) + 1);
+    out.front() = samples_.front();
+    out.back() = samples_.back();
     const double total = length();
-    for (int k = 0; k <= segments; ++k) {
-        if (k == 0 || k == segments) {
-            out.push_back(k == 0 ? samples_.front() : samples_.back());
-            continue;
-        }
-        const double s = total * k / segments;
-        const auto it = std::upper_bound(arc_.begin(), arc_.end(), s);
-        const std::size_t i = std::clamp<std::size_t>(it - arc_.begin(), 1, arc_.size() - 1);
-        const double w = (s - arc_[i - 1]) / std::max(arc_[i] - arc_[i - 1], 1e-300);
-        // Linear in sigma between samples: the station lands within O(h^2 k) of arc length s.
-        const double sigma0 = sigma0_[i - 1] + w * (sigma0_[i] - sigma0_[i - 1]);
-        std::array<double, 3> sigmas = sigmas_[i - 1];
-        out.push_back(section(sigma0, sigmas));
-    }
+    // Each station is a section started from the stored sample before it, not from the station
+    // before it, so they are independent: evaluated in parallel, each thread on its own copy of
+    // the lines.
+    tbb::enumerable_thread_specific<std::optional<TubeAxis>> copies;
+    tbb::parallel_for(tbb::blocked_range<int>(1, static_cast<int>(out.size()) - 1, kStationsPerTask),
+                      [&](const tbb::blocked_range<int>& r) {
+                          std::optional<TubeAxis>& copy = copies.local();
+                          if (!copy) copy.emplace(independent_copy());
+                          for (int k = r.begin(); k != r.end(); ++k) {
+                              const double s = total * k / segments;
+                              const auto it = std::upper_bound(arc_.begin(), arc_.end(), s);
+                              const std::size_t i = std::clamp<std::size_t>(it - arc_.begin(), 1, arc_.size() - 1);
+                              const double w = (s - arc_[i - 1]) / std::max(arc_[i] - arc_[i - 1], 1e-300);
+                              // Linear in sigma between samples: the station lands within O(h^2 k) of
+                              // arc length s.
+                              const double sigma0 = sigma0_[i - 1] + w * (sigma0_[i] - sigma0_[i - 1]);
+                              std::array<double, 3> sigmas = sigmas_[i - 1];
+                              out[static_cast<std::size_t>(k)] = copy->section(sigma0, sigmas);
+                          }
+                      });
     return out;
+}
+
+TubeAxis TubeAxis::independent_copy() const {
+    TubeAxis copy = *this;
+    for (int k = 0; k < 4; ++k) copy.generators_[k] = generators_[k].independent_copy();
+    return copy;
 }
 
 double TubeAxis::max_kink() const {

@@ -63,6 +63,7 @@ public:
 
 private:
     explicit TubeAxis(std::array<Generator, 4> generators);
+    TubeAxis independent_copy() const;  // Generator::independent_copy of every line
     AxisSample end_sample(double sigma) const;
     AxisSample section(double sigma0, std::array<double, 3>& sigmas) const;
     void push(const AxisSample& sample, double sigma0, const std::array<double, 3>& sigmas);

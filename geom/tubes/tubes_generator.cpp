@@ -56,6 +56,16 @@ Generator::Generator(std::vector<GeneratorPiece> pieces, LoopPoint start, LoopPo
     }
 }
 
+Generator Generator::independent_copy() const {
+    Generator copy = *this;
+    for (std::size_t k = 0; k < pieces_.size(); ++k) {
+        copy.pieces_[k].iso = Handle(Geom_Curve)::DownCast(pieces_[k].iso->Copy());
+        const GeomAdaptor_Curve& c = *tables_[k].curve;
+        copy.tables_[k].curve = new GeomAdaptor_Curve(copy.pieces_[k].iso, c.FirstParameter(), c.LastParameter());
+    }
+    return copy;
+}
+
 double Generator::param_at(int k, double ds) const {
     const Table& table = tables_[k];
     const auto it = std::upper_bound(table.arc.begin(), table.arc.end(), ds);

@@ -37,6 +37,9 @@ public:
     const std::vector<GeneratorPiece>& pieces() const { return pieces_; }
 
     GeneratorPoint at(double sigma) const;
+    // The same line on copies of its curves, with caches of its own: for another thread (the
+    // curves' evaluation caches may not be shared), evaluating exactly as this one does.
+    Generator independent_copy() const;
     // Largest angle (radians) between the tangents on either side of a piece boundary.
     double max_kink() const;
 

@@ -15,12 +15,14 @@ namespace {
 
 struct Key {
     const char* name;
-    bool whole;  // a whole number
+    bool whole;     // a whole number
+    bool nullable;  // null: automatic
 };
-constexpr Key kNumbers[] = {{"size", false},      {"sweep_size", false},     {"circ", true},
-                            {"layers", true},     {"axial_aspect", false},   {"pyramid_height", false},
-                            {"gradation", false}, {"tet_parts", true},       {"tet_relax", true},
-                            {"max_elements", false}, {"solid", true},        {"time_limit", false}};
+constexpr Key kNumbers[] = {{"size", false, true},          {"sweep_size", false, true},   {"circ", true, true},
+                            {"layers", true, false},        {"axial_aspect", false, false}, {"chordal", false, false},
+                            {"pyramid_height", false, false}, {"gradation", false, false}, {"tet_parts", true, false},
+                            {"tet_relax", true, false},     {"max_elements", false, true}, {"solid", true, true},
+                            {"time_limit", false, false}};
 
 void check_formats(const nlohmann::json& v, const std::string& where) {
     if (!v.is_array() || v.empty()) throw Error(where + ": \"formats\" must be a non-empty list such as [\"msh\"]");
@@ -33,12 +35,16 @@ void check_formats(const nlohmann::json& v, const std::string& where) {
 // Types here; ranges by run::mesh_options once the block's options are complete.
 void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
     if (key == "formats") return check_formats(v, where);
+    if (key == "move_apexes") {
+        if (!v.is_boolean()) throw Error(fmt::format("{}: \"move_apexes\" must be true or false, got {}", where, v.dump()));
+        return;
+    }
     for (const Key& k : kNumbers) {
         if (key != k.name) continue;
-        const bool automatic = v.is_null() && key != "time_limit";
+        const bool automatic = v.is_null() && k.nullable;
         if (!automatic && !(v.is_number() && std::isfinite(v.get<double>())))
             throw Error(fmt::format("{}: \"{}\" must be a number{}, got {}", where, key,
-                                    key == "time_limit" ? "" : " or null (automatic)", v.dump()));
+                                    k.nullable ? " or null (automatic)" : "", v.dump()));
         // Whole numbers become ints: beyond that range they are out of every option's range anyway.
         if (!automatic && k.whole &&
             (v.get<double>() != std::floor(v.get<double>()) || std::abs(v.get<double>()) > 1e9))
@@ -63,6 +69,8 @@ run::MeshSettings settings_of(const nlohmann::json& o) {
     s.circumferential = optional_of<int>(o, "circ");
     s.layers = o.at("layers").get<int>();
     s.axial_aspect = o.at("axial_aspect").get<double>();
+    s.chordal = o.at("chordal").get<double>();
+    s.move_apexes = o.at("move_apexes").get<bool>();
     s.pyramid_height = o.at("pyramid_height").get<double>();
     s.gradation = o.at("gradation").get<double>();
     s.tet_parts = o.at("tet_parts").get<int>();
@@ -81,10 +89,12 @@ nlohmann::json default_block_options() {
             {"circ", nullptr},
             {"layers", d.layers},
             {"axial_aspect", d.axial_aspect},
+            {"chordal", d.chordal},
             {"pyramid_height", d.pyramid_height},
             {"gradation", d.gradation},
             {"tet_parts", d.tet_parts},
             {"tet_relax", d.tet_relax},
+            {"move_apexes", d.move_apexes},
             {"max_elements", nullptr},
             {"solid", nullptr},
             {"formats", {"msh"}},

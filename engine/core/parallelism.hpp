@@ -20,9 +20,8 @@ struct Parallelism {
 int usable_cores();
 
 // The parallelism a user asked for: `threads` workers (0: all usable cores; more than the cores
-// are capped, since they only add start-up and contention: 4096 on 2 cores turned a 0.2 s job
-// into 78 s) and `parts` Delaunay parts (0: one per thread, the mesh then depends on the thread
-// count). A negative thread count is an Error.
+// are capped, since they only add start-up and contention) and `parts` Delaunay parts (0: one
+// per thread, the mesh then depends on the thread count). A negative thread count is an Error.
 Parallelism resolve_parallelism(int threads, unsigned parts);
 
 // oneTBB's limit of par.threads workers for as long as the result lives (nested limits take the

@@ -17,28 +17,19 @@ import datetime
 import json
 import os
 import subprocess
-import sys
 import tempfile
-import time
+
+from gnu_time import measured
 
 SECTION = ["--columns", "3", "--lifts", "3", "--width", "20", "--depth", "15", "--lift-height", "3",
            "--diameter", "0.032", "--crossing-pipes", "2"]
 KINDS = [("tets", "tet_collapse"), ("pyramids", "pyramid_scaled_jacobian"), ("hexes", "hex_scaled_jacobian")]
 
 
-def timed(command):
+def timed_mib(command):
     """Wall seconds and peak RSS (MiB) of the command and the processes it waited for."""
-    fd, path = tempfile.mkstemp()
-    os.close(fd)
-    start = time.monotonic()
-    r = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", path] + command, stdout=subprocess.DEVNULL)
-    seconds = time.monotonic() - start
-    with open(path) as f:
-        peak = int(f.read().split()[-1]) / 1024
-    os.remove(path)
-    if r.returncode != 0:
-        sys.exit(f"failed ({r.returncode}): {' '.join(command)}")
-    return seconds, peak
+    seconds, kib = measured([command])
+    return seconds, kib / 1024
 
 
 def load(path):
@@ -96,7 +87,7 @@ def markdown(result):
         ratio = "-" if r["count_ratio"] is None else f"{r['count_ratio']:.4f}"
         lines.append(f"| {kind} | {r['batch']} | {r['assembly']} | {ratio} | {fmt(b['min'])} / {fmt(a['min'])} | "
                      f"{fmt(b['mean'])} / {fmt(a['mean'])} |")
-    lines += ["", f"| | batch | assembly | assembly / batch |", "|---|---|---|---|",
+    lines += ["", "| | batch | assembly | assembly / batch |", "|---|---|---|---|",
               f"| wall time | {t['batch_seconds']:.1f} s | {t['assembly_seconds']:.1f} s | {t['ratio']:.2f} |",
               f"| peak memory | {t['batch_peak_mib']:.0f} MiB | {t['assembly_peak_mib']:.0f} MiB | |",
               f"| nodes | {result['batch']['nodes']} | {result['assembly']['nodes']} | |", ""]
@@ -121,10 +112,10 @@ def main():
     load_before = open("/proc/loadavg").read().split()[:3]
 
     batch_out = os.path.join(work, "batch")
-    batch_seconds, batch_peak = timed([tubemesh, "batch", os.path.join(dam, "manifest.json"), "-o", batch_out,
+    batch_seconds, batch_peak = timed_mib([tubemesh, "batch", os.path.join(dam, "manifest.json"), "-o", batch_out,
                                        "--threads", str(args.threads), "--formats", "msh", "--quiet"])
     report = os.path.join(work, "assembly.json")
-    assembly_seconds, assembly_peak = timed([tubemesh, "mesh", "--assembly", "--threads", str(args.threads), "--quiet",
+    assembly_seconds, assembly_peak = timed_mib([tubemesh, "mesh", "--assembly", "--threads", str(args.threads), "--quiet",
                                              os.path.join(dam, "section.step"), "-o",
                                              os.path.join(work, "assembly.msh"), "--report", report])
     batch, assembly = batch_totals(batch_out, ids), assembly_totals(load(report))

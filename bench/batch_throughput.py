@@ -21,31 +21,11 @@ import json
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
-import time
+
+from gnu_time import measured
 
 MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"}
-
-
-def timed(commands, env=None):
-    """Runs the commands side by side; returns wall seconds and the largest peak RSS (KiB) of
-    any process in their trees (GNU time's %M covers waited-for descendants)."""
-    start = time.monotonic()
-    procs = []
-    for c in commands:
-        fd, path = tempfile.mkstemp()
-        os.close(fd)
-        procs.append((subprocess.Popen(["/usr/bin/time", "-f", "%M", "-o", path] + c,
-                                       stdout=subprocess.DEVNULL, env=env), path))
-    peak = 0
-    for p, path in procs:
-        if p.wait() not in (0, 1):
-            sys.exit(f"failed: {p.args}")
-        with open(path) as f:
-            peak = max(peak, int(f.read().split()[-1]))
-        os.remove(path)
-    return time.monotonic() - start, peak
 
 
 def catalogue(tubemesh, outdir):
@@ -83,7 +63,7 @@ def main():
 
     rows, reference = [], None
     for name, commands in modes.items():
-        seconds, peak_kib = timed(commands, env={**os.environ, **MPI_ENV})
+        seconds, peak_kib = measured(commands, env={**os.environ, **MPI_ENV}, ok=(0, 1))
         if name.startswith("2 shards"):
             subprocess.run([tubemesh, "batch", "--merge", out("shards"), "--quiet"], check=True)
         cat = catalogue(tubemesh, out(dirs[name]))

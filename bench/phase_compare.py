@@ -22,8 +22,9 @@ import json
 import os
 import statistics
 import subprocess
-import sys
 import tempfile
+
+from gnu_time import measured
 
 # Phases that make elements, and the report field that counts them.
 MADE = {"sweep": "hexes", "pyramids": "pyramids", "tets": "tets"}
@@ -31,26 +32,11 @@ MADE = {"sweep": "hexes", "pyramids": "pyramids", "tets": "tets"}
 NOT_AFTER_IMPORT = {"import", "build"}
 
 
-def peak_kib(cmd):
-    """Runs cmd under GNU time; returns its peak RSS in KiB."""
-    fd, path = tempfile.mkstemp()
-    os.close(fd)
-    try:
-        r = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", path] + cmd, stdout=subprocess.DEVNULL,
-                           stderr=subprocess.PIPE, text=True)
-        if r.returncode != 0:
-            sys.exit(f"failed ({r.returncode}): {' '.join(cmd)}\n{r.stderr.strip()}")
-        with open(path) as f:
-            return int(f.read().split()[-1])
-    finally:
-        os.remove(path)
-
-
 def run_case(tubemesh, args, threads, work, tag):
     """One meshing run: (report dict, peak KiB, mesh path)."""
     report = os.path.join(work, f"{tag}.json")
     mesh = os.path.join(work, f"{tag}.msh")
-    kib = peak_kib([tubemesh, "mesh", "--quiet", "--threads", str(threads), "-o", mesh, "--report", report] + args)
+    kib = measured([[tubemesh, "mesh", "--quiet", "--threads", str(threads), "-o", mesh, "--report", report] + args])[1]
     with open(report) as f:
         return json.load(f), kib, mesh
 
@@ -91,7 +77,7 @@ def main():
                    stdout=subprocess.DEVNULL)
     cases = {"serpentine lift": [lift], "dam block, S 0.3": ["--size", "0.3"]}
     builds = {"base": a.base, "new": a.new}
-    base_kib = {b: peak_kib([t, "--version"]) for b, t in builds.items()}
+    base_kib = {b: measured([[t, "--version"]])[1] for b, t in builds.items()}
     runs = {(c, b, th): [] for c in cases for b in builds for th in (1, 2)}
     same_bytes = {}
     for rep in range(a.repeat):

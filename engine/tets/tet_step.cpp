@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "engine/core/timing.hpp"
@@ -20,25 +21,29 @@ void mark_movable_apexes(const HybridMesh& mesh, const std::vector<index_t>& to_
     const std::vector<index_t>& pyramids = mesh.block(CellKind::Pyramid).nodes;
     for (std::size_t c = 0; c + 4 < pyramids.size(); c += 5)
         for (int k = 0; k < 4; ++k) held[pyramids[c + k]] = 1;
-    std::vector<std::vector<std::array<index_t, 4>>> bases(dom.front_points);
+    // (apex, base) of every pyramid whose apex may move, by apex, each apex's in pyramid order.
+    std::vector<std::pair<index_t, std::array<index_t, 4>>> tops;
     for (std::size_t c = 0; c + 4 < pyramids.size(); c += 5) {
         const index_t apex = pyramids[c + 4];
         if (held[apex] || to_domain[apex] == kNoIndex) continue;
         std::array<index_t, 4> base;
         for (int k = 0; k < 4; ++k) base[k] = to_domain[pyramids[c + k]];
         // The base corners are nodes of the pyramid's side triangles, so front points.
-        if (std::find(base.begin(), base.end(), kNoIndex) == base.end()) bases[to_domain[apex]].push_back(base);
+        if (std::find(base.begin(), base.end(), kNoIndex) == base.end()) tops.push_back({to_domain[apex], base});
     }
+    std::stable_sort(tops.begin(), tops.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     dom.apex_rank.assign(dom.front_points, kNoIndex);
     dom.apex_at = {0};
     dom.apex_bases.clear();
     dom.apex_floor = floor;
-    for (index_t p = 0; p < dom.front_points; ++p) {
-        if (bases[p].empty()) continue;
-        dom.apex_rank[p] = static_cast<index_t>(dom.apex_at.size() - 1);
-        dom.apex_bases.insert(dom.apex_bases.end(), bases[p].begin(), bases[p].end());
-        dom.apex_at.push_back(static_cast<index_t>(dom.apex_bases.size()));
+    for (const auto& [apex, base] : tops) {
+        if (dom.apex_rank[apex] == kNoIndex) {
+            if (!dom.apex_bases.empty()) dom.apex_at.push_back(static_cast<index_t>(dom.apex_bases.size()));
+            dom.apex_rank[apex] = static_cast<index_t>(dom.apex_at.size() - 1);
+        }
+        dom.apex_bases.push_back(base);
     }
+    if (!dom.apex_bases.empty()) dom.apex_at.push_back(static_cast<index_t>(dom.apex_bases.size()));
 }
 
 }  // namespace

@@ -49,10 +49,6 @@ double max_curvature(const BRepAdaptor_Curve& curve) {
     return std::isfinite(k) ? k : 0;
 }
 
-// The turn of a circular arc whose chord strays from it by `chordal` times the chord's length:
-// the sagitta of a chord turning by t is tan(t / 4) / 2 of its length.
-double max_turn(double chordal) { return 4 * std::atan(2 * chordal); }
-
 std::vector<double> uniform_params(const BRepAdaptor_Curve& curve, int segments) {
     const double t0 = curve.FirstParameter(), t1 = curve.LastParameter();
     GCPnts_UniformAbscissa split(curve, segments + 1, t0, t1);
@@ -74,7 +70,7 @@ std::vector<double> uniform_params(const BRepAdaptor_Curve& curve, int segments)
 std::vector<EdgePolyline> discretize_edges(const Model& model, const std::set<int>& skip, double size,
                                            double chordal) {
     if (!(chordal > 0)) throw Error("the chordal tolerance must be positive, got " + std::to_string(chordal));
-    const double turn = max_turn(chordal);
+    const double turn = chordal_turn(chordal);
     // geom::Model numbers faces and edges; vertices get TopExp::MapShapes order on the solid,
     // which is just as deterministic.
     TopTools_IndexedMapOfShape vertices;

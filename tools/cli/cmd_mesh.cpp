@@ -13,7 +13,6 @@
 // complete. Any error: one line on stderr, exit 2, no output file, earlier files untouched.
 #include <fmt/format.h>
 
-#include <cmath>
 #include <optional>
 #include <memory>
 #include <new>
@@ -22,6 +21,7 @@
 
 #include "engine/io/mesh_io.hpp"
 #include "geom/assembly/mesh_assembly.hpp"
+#include "geom/sizing/discretize_edges.hpp"
 #include "geom/sizing/element_budget.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
@@ -137,7 +137,7 @@ Command add_mesh_command(CLI::App& app) {
     args->chordal_option = cmd->add_option("--chordal", args->settings.chordal,
                     fmt::format("Curved CAD edges: largest gap between a chord and the curve over the chord's length "
                                 "(default {}: a segment turns by at most {:.3f} rad)",
-                                d.chordal, 4 * std::atan(2 * d.chordal)))
+                                d.chordal, geom::chordal_turn(d.chordal)))
         ->check(number_in(run::kChordalRange));
     args->layers_option = cmd->add_option("--layers", args->settings.layers,
                     fmt::format("Hex layers across the ring, L (default {}, graded {} towards the wall)", d.layers,

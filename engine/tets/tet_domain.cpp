@@ -15,6 +15,9 @@ TetDomain copy_of(const TetDomain& d) {
     c.apex_at = d.apex_at;
     c.apex_bases = d.apex_bases;
     c.apex_floor = d.apex_floor;
+    c.slide_rank = d.slide_rank;
+    c.slide_normal = d.slide_normal;
+    c.slide_offset = d.slide_offset;
     return c;
 }
 

@@ -89,6 +89,10 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
         for (index_t p = fixed; p < n; ++p)
             if (in_tet[p]) used.push_back(p);
     }
+    // The old tets' vertex rows alone (for the blocked points' second walks): the old store's
+    // neighbour rows would only add to the peak while the new mesh is built.
+    const std::vector<index_t> old_rows(dom.tets.vertices().begin(), dom.tets.vertices().end());
+    dom.tets = delaunay::TetStore();
     delaunay::Triangulation tri;
     tri.adopt(std::span<const double>(recovered.xyz), recovered.tets.clone());
     // Every free point keeps its id (unused ones too, never inserted): kernel id = domain id.
@@ -109,8 +113,8 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
         std::vector<std::vector<index_t>> near(blocked.size());
         std::vector<index_t> slot(n, kNoIndex);
         for (std::size_t i = 0; i < blocked.size(); ++i) slot[blocked[i]] = static_cast<index_t>(i);
-        for (index_t t = 0; t < dom.tets.size(); ++t) {
-            const index_t* v = dom.tets.vertex(t);
+        for (std::size_t t = 0; t < old_rows.size(); t += 4) {
+            const index_t* v = old_rows.data() + t;
             for (int i = 0; i < 4; ++i)
                 if (is_blocked[v[i]])
                     for (int j = 0; j < 4; ++j)

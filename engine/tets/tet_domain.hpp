@@ -59,8 +59,14 @@ struct TetDomain {
     const double* point(index_t p) const { return xyz.data() + std::size_t{3} * p; }
 };
 
-// A copy (TetStore has no copy constructor, so that a large copy is always asked for by name).
-TetDomain copy_of(const TetDomain& d);
+// The tets boundary recovery left, kept for the relaxation to insert points into again: over
+// the domain's first `points` points, which nothing later moves or renumbers, so only the tets
+// are copied (TetStore has no copy constructor: a large copy is always asked for by name).
+struct RecoveredTets {
+    delaunay::TetStore tets;
+    index_t points = 0;
+};
+RecoveredTets recovered_tets(const TetDomain& d);
 
 // Removes the points from `first` on that no tet uses (the ones a kernel run skipped) and moves
 // the later ones down, in order; points before `first` keep their ids. Returns the old -> new

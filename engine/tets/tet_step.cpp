@@ -143,8 +143,8 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
     if (options.slide_surface) mark_sliding_points(mesh, front, to_domain, to_mesh, domain);
     // The relaxation inserts the interior points again into this mesh.
-    TetDomain recovered;
-    if (options.relaxation.iterations > 0) recovered = copy_of(domain);
+    RecoveredTets recovered;
+    if (options.relaxation.iterations > 0) recovered = recovered_tets(domain);
     if (options.part_done) options.part_done();
 
     ControlSpaceOptions co;
@@ -157,7 +157,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr);
     if (options.relaxation.iterations > 0) {
         stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation);
-        recovered = TetDomain();
+        recovered = RecoveredTets();
     }
     if (options.part_done) options.part_done();  // refinement and relaxation
 

@@ -79,8 +79,8 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 // are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
 // so the way between them is short and inside the region. Points that fail that too (none on
 // the reference cases) are left without tets. Returns how many needed the second walk.
-index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
-    const index_t fixed = recovered.point_count(), n = dom.point_count();
+index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts) {
+    const index_t fixed = recovered.points, n = dom.point_count();
     std::vector<index_t> used;
     used.reserve(n - fixed);
     {
@@ -94,7 +94,7 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
     const std::vector<index_t> old_rows(dom.tets.vertices().begin(), dom.tets.vertices().end());
     dom.tets = delaunay::TetStore();
     delaunay::Triangulation tri;
-    tri.adopt(std::span<const double>(recovered.xyz), recovered.tets.clone());
+    tri.adopt(std::span<const double>(dom.xyz).first(std::size_t{3} * fixed), recovered.tets.clone());
     // Every free point keeps its id (unused ones too, never inserted): kernel id = domain id.
     std::vector<index_t> ids(n - fixed);
     for (index_t p = fixed; p < n; ++p) ids[p - fixed] = p;
@@ -141,13 +141,13 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
 
 }  // namespace
 
-RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
+RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
                              const Parallelism& par, const RelaxationOptions& options) {
     const auto t0 = Clock::now();
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
-    const index_t fixed = recovered.point_count();
-    if (fixed > domain.point_count() || recovered.front_points != domain.front_points)
+    const index_t fixed = recovered.points;
+    if (fixed > domain.point_count() || fixed < domain.front_points)
         throw Error("relaxation: the recovered mesh is not the start of the domain");
     RelaxationStats stats;
     if (options.iterations == 0) return stats;

@@ -93,15 +93,15 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts)
     // neighbour rows would only add to the peak while the new mesh is built.
     const std::vector<index_t> old_rows(dom.tets.vertices().begin(), dom.tets.vertices().end());
     dom.tets = delaunay::TetStore();
-    delaunay::Triangulation tri;
-    tri.adopt(std::span<const double>(dom.xyz).first(std::size_t{3} * fixed), recovered.tets.clone());
-    // Every free point keeps its id (unused ones too, never inserted): kernel id = domain id.
-    std::vector<index_t> ids(n - fixed);
-    for (index_t p = fixed; p < n; ++p) ids[p - fixed] = p;
-    tri.add_points(std::span<const double>(dom.xyz).subspan(std::size_t{3} * fixed), ids);
     std::vector<double> used_xyz(3 * used.size());
     for (std::size_t i = 0; i < used.size(); ++i) std::copy_n(dom.point(used[i]), 3, used_xyz.begin() + 3 * i);
     std::vector<index_t> order = delaunay::curve_order(used_xyz);
+    used_xyz = {};
+    // The kernel holds every point (kernel id = domain id; the free ones not in a tet yet, the
+    // unused ones never inserted) and the recovered tets while it inserts.
+    delaunay::Triangulation tri;
+    tri.adopt(std::move(dom.xyz), recovered.tets.clone());
+    dom.xyz.clear();
     for (index_t& k : order) k = used[k];
     tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
     constexpr index_t kMinPointsPerPart = 64;
@@ -136,6 +136,7 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts)
         tri.insert(blocked, 1, kMinPointsPerPart);
     }
     dom.tets = tri.finish();
+    dom.xyz = tri.take_points();
     return static_cast<index_t>(blocked.size());
 }
 

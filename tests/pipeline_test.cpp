@@ -214,20 +214,29 @@ TEST(Pipeline, TetPhaseReportsWhereItsTimeWent) {
     EXPECT_LE(count("rescue points"), count("new nodes"));
 }
 
+// A preset meshed with `plain` options on 2 threads, and with `change` made to them on 1 and 2
+// threads (expected to give the same mesh): {plain, changed}.
+template <class Change>
+std::pair<PipelineResult, PipelineResult> with_and_without(const std::string& preset, MeshOptions plain,
+                                                           Change change) {
+    const Prepared p = prepare(preset);
+    plain.threads = 2;
+    MeshOptions one = plain, two = plain;
+    change(one);
+    change(two);
+    one.threads = 1;
+    PipelineResult a = run_pipeline(p.prepared.pipeline_input(), plain);
+    PipelineResult b = run_pipeline(p.prepared.pipeline_input(), one);
+    const PipelineResult c = run_pipeline(p.prepared.pipeline_input(), two);
+    EXPECT_TRUE(b.mesh == c.mesh) << "changed options: 1 and 2 threads differ";
+    return {std::move(a), std::move(b)};
+}
+
 // Apexes moved by the optimisation: the tets between pyramids are no longer fixed, so the
 // tets' minimum rises; every pyramid stays at 0.5 or better (or where it was, if below), the
 // hexes and the pyramids' bases do not move, and the mesh is the same for 1 and 2 threads.
 TEST(Pipeline, MovedApexesLiftTheTetsAndKeepThePyramidsAtTheFloor) {
-    const Prepared p = prepare("paper-ex2");
-    MeshOptions fixed, one, two;
-    fixed.threads = 2;
-    one.threads = 1;
-    two.threads = 2;
-    one.tets.move_apexes = two.tets.move_apexes = true;
-    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), fixed);
-    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), one);
-    const PipelineResult c = run_pipeline(p.prepared.pipeline_input(), two);
-    EXPECT_TRUE(b.mesh == c.mesh);
+    const auto [a, b] = with_and_without("paper-ex2", {}, [](MeshOptions& o) { o.tets.move_apexes = true; });
     ASSERT_TRUE(check_mesh(b.mesh).ok()) << describe(check_mesh(b.mesh));
     EXPECT_EQ(a.mesh.block(CellKind::Pyramid).nodes, b.mesh.block(CellKind::Pyramid).nodes);
     EXPECT_EQ(a.mesh.block(CellKind::Hex).nodes, b.mesh.block(CellKind::Hex).nodes);
@@ -258,16 +267,9 @@ TEST(Pipeline, MovedApexesLiftTheTetsAndKeepThePyramidsAtTheFloor) {
 // its area and the solid its volume, nodes of CAD edges (two groups), rings and pyramids stay,
 // the tets' minimum and mean rise, and the mesh is the same for 1 and 2 threads.
 TEST(Pipeline, SlidSurfaceNodesStayInTheirFlatFaces) {
-    const Prepared p = prepare("paper-ex1");
-    MeshOptions fixed, one, two;
-    fixed.threads = 2;
-    one.threads = 1;
-    two.threads = 2;
+    MeshOptions fixed;
     fixed.tets.slide_surface = false;
-    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), fixed);
-    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), one);
-    const PipelineResult c = run_pipeline(p.prepared.pipeline_input(), two);
-    EXPECT_TRUE(b.mesh == c.mesh);
+    const auto [a, b] = with_and_without("paper-ex1", fixed, [](MeshOptions& o) { o.tets.slide_surface = true; });
     const CheckReport ca = check_mesh(a.mesh), cb = check_mesh(b.mesh);
     ASSERT_TRUE(cb.ok()) << describe(cb);
     EXPECT_NEAR(cb.volume, ca.volume, 1e-9 * ca.volume);

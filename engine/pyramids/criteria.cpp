@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "engine/mesh/edge_key.hpp"
@@ -145,19 +146,31 @@ void collect_fan(index_t apex, const Visible& vis, ApexFan& fan) {
 // triangles there; no apex position can change the latter. A host face, for one, lies a
 // fixed half axial step below the end pyramids of a ring whatever their apex, and its
 // triangles next to the ring run under their lateral faces.
+// The boxes of the lateral edges (corner k to the apex), each inside the pyramid's box.
+std::array<Box, 4> lateral_edge_boxes(const NewPyramid& y) {
+    std::array<Box, 4> box;
+    for (int k = 0; k < 4; ++k) {
+        box[k] = Box::of(y.p[k]);
+        box[k].add(y.p[4]);
+    }
+    return box;
+}
+
 bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
     const index_t apex = y.node[4];
     ApexFan fan;
     collect_fan(apex, vis, fan);
-    for (int k = 0; k < 4; ++k) {
-        if (!y.edge_new[k]) continue;
-        const Vec3& x = y.p[k];
-        Box ebox = Box::of(x);
-        ebox.add(y.p[4]);
-        for (const VisibleEdge& e : vis.edges) {
-            if (e.near_base) continue;
-            if (apex != kNoIndex && (e.a == apex || e.b == apex)) continue;
-            if (box_distance2(ebox, e.box) >= d2min) continue;
+    const std::array<Box, 4> ebox = lateral_edge_boxes(y);
+    // Any pair fails the candidate, so the front's edges come first: one that is the threshold
+    // away from the pyramid's box is as far from every new edge, whose boxes lie inside it.
+    for (const VisibleEdge& e : vis.edges) {
+        if (e.near_base) continue;
+        if (apex != kNoIndex && (e.a == apex || e.b == apex)) continue;
+        if (box_distance2(y.box, e.box) >= d2min) continue;
+        for (int k = 0; k < 4; ++k) {
+            if (!y.edge_new[k]) continue;
+            if (box_distance2(ebox[k], e.box) >= d2min) continue;
+            const Vec3& x = y.p[k];
             const double d2 = segment_segment_distance2(x, y.p[4], e.pa, e.pb);
             if (d2 >= d2min) continue;
             // Relative slack: when the nearest point is X itself the two computations agree
@@ -170,14 +183,15 @@ bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
     return false;
 }
 
+// As above, faces first: one whose box misses the pyramid's misses every new edge's.
 bool edge_crosses_face(const NewPyramid& y, const Visible& vis) {
-    for (int k = 0; k < 4; ++k) {
-        if (!y.edge_new[k]) continue;
-        Box ebox = Box::of(y.p[k]);
-        ebox.add(y.p[4]);
-        const index_t a = y.node[k], b = y.node[4];
-        for (const VisibleFace& face : vis.faces) {
-            if (face.role == FaceRole::Own || !face.box.overlaps(ebox)) continue;
+    const std::array<Box, 4> ebox = lateral_edge_boxes(y);
+    const index_t b = y.node[4];
+    for (const VisibleFace& face : vis.faces) {
+        if (face.role == FaceRole::Own || !face.box.overlaps(y.box)) continue;
+        for (int k = 0; k < 4; ++k) {
+            if (!y.edge_new[k] || !face.box.overlaps(ebox[k])) continue;
+            const index_t a = y.node[k];
             // Both ends on a quad that has no such edge: the new edge is its diagonal.
             if (face.size == 4 && face.has(a) && b != kNoIndex && face.has(b)) return true;
             if (any_triangle(face, [&](const std::array<index_t, 3>& it, const std::array<const Vec3*, 3>& t) {
@@ -200,17 +214,21 @@ bool base_side(const NewPyramid& y, const VisibleEdge& e) {
     return false;
 }
 
+// Edges first, as above: one whose box misses the pyramid's misses every lateral face's.
 bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
+    std::array<Box, 4> tbox;
     for (int f = 0; f < 4; ++f) {
-        if (!y.face_new[f]) continue;
-        const int g = (f + 1) % 4;
-        const std::array<index_t, 3> it{y.node[f], y.node[g], y.node[4]};
-        const std::array<const Vec3*, 3> t{&y.p[f], &y.p[g], &y.p[4]};
-        Box tbox = Box::of(y.p[f]);
-        tbox.add(y.p[g]);
-        tbox.add(y.p[4]);
-        for (const VisibleEdge& e : vis.edges) {
-            if (!e.box.overlaps(tbox) || base_side(y, e)) continue;
+        tbox[f] = Box::of(y.p[f]);
+        tbox[f].add(y.p[(f + 1) % 4]);
+        tbox[f].add(y.p[4]);
+    }
+    for (const VisibleEdge& e : vis.edges) {
+        if (!e.box.overlaps(y.box) || base_side(y, e)) continue;
+        for (int f = 0; f < 4; ++f) {
+            if (!y.face_new[f] || !e.box.overlaps(tbox[f])) continue;
+            const int g = (f + 1) % 4;
+            const std::array<index_t, 3> it{y.node[f], y.node[g], y.node[4]};
+            const std::array<const Vec3*, 3> t{&y.p[f], &y.p[g], &y.p[4]};
             if (improper_contact(e.a, e.pa, e.b, e.pb, it, t, y)) return true;
         }
     }
@@ -272,8 +290,11 @@ Verdict judge(const Front& f, const Candidate& c, const Thresholds& t, const Vis
     if (orient3d(p[0], p[1], p[2], p[4]) <= 0 || orient3d(p[0], p[2], p[3], p[4]) <= 0 ||
         orient3d(p[0], p[1], p[3], p[4]) <= 0 || orient3d(p[1], p[2], p[3], p[4]) <= 0)
         return Verdict::NotPositive;
-    if (f.quality_floor > 0 && pyramid_scaled_jacobian({p[0], p[1], p[2], p[3], p[4]}) < f.quality_floor)
-        return Verdict::LowQuality;
+    if (f.quality_floor > 0) {
+        const bool ideal = c.id == kNoIndex && std::memcmp(&c.p, &f.ideal, sizeof(Vec3)) == 0;
+        const double quality = ideal ? f.ideal_quality : pyramid_scaled_jacobian({p[0], p[1], p[2], p[3], p[4]});
+        if (quality < f.quality_floor) return Verdict::LowQuality;
+    }
     if (!match_existing(y, vis, state)) return Verdict::FaceMismatch;
     if (!keeps_front_manifold(y, vis)) return Verdict::PinchesFront;
 

@@ -190,6 +190,9 @@ void collect_nodes(const World& w, index_t i, const Focus& focus, Visible& out) 
         // Apexes: every apex a front can see belongs to a neighbour.
         if (s.has_pyramid(j)) consider(s.apex(j), s.point(s.apex(j)));
     }
+    // With a focus only a new apex is judged: the nodes are only tested for lying inside its
+    // pyramid, which a repeated node does not change, and there are no candidates.
+    if (!focus.all) return;
     std::sort(out.nodes.begin(), out.nodes.end(), [](const NearNode& l, const NearNode& r) { return l.id < r.id; });
     out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end(),
                                 [](const NearNode& l, const NearNode& r) { return l.id == r.id; }),

@@ -19,16 +19,6 @@ namespace {
 
 using predicates::orient3d;
 
-// The triangles a visible face is judged as: (0,1,2) and, for a quad, (0,2,3).
-template <class F>
-bool any_triangle(const VisibleFace& face, F&& f) {
-    if (f(std::array<index_t, 3>{face.node[0], face.node[1], face.node[2]},
-          std::array<const Vec3*, 3>{&face.p[0], &face.p[1], &face.p[2]}))
-        return true;
-    return face.size == 4 && f(std::array<index_t, 3>{face.node[0], face.node[2], face.node[3]},
-                               std::array<const Vec3*, 3>{&face.p[0], &face.p[2], &face.p[3]});
-}
-
 double face_distance2(const VisibleFace& face, const Vec3& p) {
     double d2 = point_triangle_distance2(p, face.p[0], face.p[1], face.p[2]);
     if (face.size == 4) d2 = std::min(d2, point_triangle_distance2(p, face.p[0], face.p[2], face.p[3]));
@@ -183,21 +173,31 @@ bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
     return false;
 }
 
-// As above, faces first: one whose box misses the pyramid's misses every new edge's.
+// As above, faces first: one whose box misses the pyramid's misses every new edge's. A new
+// apex shares no node with a face, so a new edge shares at most its base corner with one of
+// the face's triangles; leaving that corner off the triangle's plane, it meets it there only.
 bool edge_crosses_face(const NewPyramid& y, const Visible& vis) {
     const std::array<Box, 4> ebox = lateral_edge_boxes(y);
     const index_t b = y.node[4];
     for (const VisibleFace& face : vis.faces) {
         if (face.role == FaceRole::Own || !face.box.overlaps(y.box)) continue;
+        // Per triangle of the face: 1 the apex is surely off its plane, 0 not known, -1 not asked.
+        std::array<int, 2> apex_off{-1, -1};
         for (int k = 0; k < 4; ++k) {
             if (!y.edge_new[k] || !face.box.overlaps(ebox[k])) continue;
             const index_t a = y.node[k];
             // Both ends on a quad that has no such edge: the new edge is its diagonal.
             if (face.size == 4 && face.has(a) && b != kNoIndex && face.has(b)) return true;
-            if (any_triangle(face, [&](const std::array<index_t, 3>& it, const std::array<const Vec3*, 3>& t) {
-                    return improper_contact(a, y.p[k], b, y.p[4], it, t, y);
-                }))
-                return true;
+            for (int tri = 0; tri < face.size - 2; ++tri) {
+                const int c1 = tri + 1, c2 = tri + 2;  // triangles (0, 1, 2) and (0, 2, 3)
+                const std::array<index_t, 3> it{face.node[0], face.node[c1], face.node[c2]};
+                const std::array<const Vec3*, 3> t{&face.p[0], &face.p[c1], &face.p[c2]};
+                if (b == kNoIndex && (a == it[0] || a == it[1] || a == it[2])) {
+                    if (apex_off[tri] < 0) apex_off[tri] = PlaneFilter(*t[0], *t[1], *t[2]).surely_off(*t[0], y.p[4]);
+                    if (apex_off[tri] == 1) continue;
+                }
+                if (improper_contact(a, y.p[k], b, y.p[4], it, t, y)) return true;
+            }
         }
     }
     return false;
@@ -214,19 +214,29 @@ bool base_side(const NewPyramid& y, const VisibleEdge& e) {
     return false;
 }
 
-// Edges first, as above: one whose box misses the pyramid's misses every lateral face's.
+// Edges first, as above: one whose box misses the pyramid's misses every lateral face's. A
+// front edge with one end at a base corner of a lateral face (a new apex is no edge's end)
+// meets the face only there when its other end is off the face's plane.
 bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
     std::array<Box, 4> tbox;
+    std::array<PlaneFilter, 4> plane{PlaneFilter(y.p[0], y.p[1], y.p[4]), PlaneFilter(y.p[1], y.p[2], y.p[4]),
+                                     PlaneFilter(y.p[2], y.p[3], y.p[4]), PlaneFilter(y.p[3], y.p[0], y.p[4])};
     for (int f = 0; f < 4; ++f) {
         tbox[f] = Box::of(y.p[f]);
         tbox[f].add(y.p[(f + 1) % 4]);
         tbox[f].add(y.p[4]);
     }
+    const bool new_apex = y.node[4] == kNoIndex;
     for (const VisibleEdge& e : vis.edges) {
         if (!e.box.overlaps(y.box) || base_side(y, e)) continue;
         for (int f = 0; f < 4; ++f) {
             if (!y.face_new[f] || !e.box.overlaps(tbox[f])) continue;
             const int g = (f + 1) % 4;
+            if (new_apex) {
+                // Not both ends at f and g: that is a base side, skipped above.
+                const int at = e.a == y.node[f] || e.b == y.node[f] ? f : e.a == y.node[g] || e.b == y.node[g] ? g : -1;
+                if (at >= 0 && plane[f].surely_off(y.p[at], e.a == y.node[at] ? e.pb : e.pa)) continue;
+            }
             const std::array<index_t, 3> it{y.node[f], y.node[g], y.node[4]};
             const std::array<const Vec3*, 3> t{&y.p[f], &y.p[g], &y.p[4]};
             if (improper_contact(e.a, e.pa, e.b, e.pb, it, t, y)) return true;

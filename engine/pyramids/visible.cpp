@@ -17,7 +17,7 @@ namespace {
     for (int k = 1; k < size; ++k) box.add(*p[k]);
     if (box_distance2(box, f.ideal) >= f.query_radius * f.query_radius) return;
     if (!focus.all && box_distance2(box, focus.box) > focus.margin2) return;
-    VisibleFace& face = out.faces.emplace_back();
+    VisibleFace face;  // every field set below; emplace_back() would zero it first
     face.size = static_cast<std::uint8_t>(size);
     face.role = role;
     face.box = box;
@@ -25,6 +25,7 @@ namespace {
     for (int k = 0; k < size; ++k) face.p[k] = *p[k];
     if (size == 3) face.p[3] = {};
     face.at_base = face.has(f.node[0]) || face.has(f.node[1]) || face.has(f.node[2]) || face.has(f.node[3]);
+    out.faces.push_back(face);
 }
 
 // The same for faces whose coordinates must be looked up.
@@ -171,17 +172,20 @@ void collect_edges(Visible& out) {
     for (const VisibleFace& face : out.faces)
         if (face.at_base)
             for (int k = 0; k < face.size; ++k) mark_base(out, face.node[k]);
-    const auto near_base = [&](index_t n) { return n < out.base_mark.size() && out.base_mark[n] == out.stamp; };
+    const std::uint32_t* base = out.base_mark.data();
+    const std::size_t base_size = out.base_mark.size();
+    const std::uint32_t stamp = out.stamp;
+    const auto near_base = [&](index_t n) { return n < base_size && base[n] == stamp; };
     for (const VisibleFace& face : out.faces) {
         for (int k = 0; k < face.size; ++k) {
             const int l = k + 1 == face.size ? 0 : k + 1;
             if (!insert_edge(out, edge_key(face.node[k], face.node[l]))) continue;
+            const int first = face.node[l] < face.node[k] ? l : k, second = first == k ? l : k;
             VisibleEdge e;
-            const bool swap = face.node[l] < face.node[k];
-            e.a = swap ? face.node[l] : face.node[k];
-            e.b = swap ? face.node[k] : face.node[l];
-            e.pa = swap ? face.p[l] : face.p[k];
-            e.pb = swap ? face.p[k] : face.p[l];
+            e.a = face.node[first];
+            e.b = face.node[second];
+            e.pa = face.p[first];
+            e.pb = face.p[second];
             e.box = Box::of(e.pa);
             e.box.add(e.pb);
             e.near_base = near_base(e.a) || near_base(e.b);

@@ -107,6 +107,32 @@ TEST(PyramidOffPlane, DecidesOnlyWhatTheExactPredicateSays) {
     EXPECT_TRUE(surely_off_plane(o, e, Vec3{0, 1, 0}, Vec3{0.3, 0.3, -1e-6}));
 }
 
+// The plane made once and asked from any node of its triangle (the criteria measure a segment
+// from the node it shares): the same guarantee, here on nearly flat triangles and on points
+// near the plane, where the margin matters.
+TEST(PyramidOffPlane, APlaneAskedFromAnyNodeDecidesOnlyWhatTheExactPredicateSays) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int decided = 0, undecided = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 a{u(rng), u(rng), 0}, b{u(rng), u(rng), 1e-12 * u(rng)};
+        const Vec3 c = i % 3 == 0 ? a + 1e-6 * (b - a) + Vec3{1e-9 * u(rng), 0, 0}  // a needle
+                                  : Vec3{u(rng), u(rng), 1e-3 * u(rng)};
+        const Vec3 x{u(rng), u(rng), std::pow(10.0, -static_cast<int>(rng() % 16)) * u(rng)};
+        const PlaneFilter plane(a, b, c);
+        for (const Vec3& s : {a, b, c}) {
+            if (!plane.surely_off(s, x)) {
+                ++undecided;
+                continue;
+            }
+            ++decided;
+            EXPECT_NE(predicates::orient3d(a, b, c, x), 0);
+        }
+    }
+    EXPECT_GT(decided, 0);
+    EXPECT_GT(undecided, 0);  // the points nearest the plane are left to the exact predicate
+}
+
 TEST(PyramidBatches, NoTwoNeighboursShareABatchAndEveryFrontHasOne) {
     const double a = 2.0 * std::sin(std::numbers::pi / 8);
     scene::BoxGrid box;

@@ -127,15 +127,6 @@ void collect_fan(index_t apex, const Visible& vis, ApexFan& fan) {
     }
 }
 
-// "The distance between the new edges and visible edges": a new edge X-P fails where it
-// comes nearer to a front edge than the threshold and than its base corner X already is.
-// Not measured: edges that touch the base's immediate neighbourhood (an end is a node of a
-// front face at a base corner) or the fan of an existing apex. A new edge leaves the base
-// corner X across those faces, so its nearness to such edges is the angle it makes with
-// them — which the apex-to-face distance already bounds — times the size of the input's
-// triangles there; no apex position can change the latter. A host face, for one, lies a
-// fixed half axial step below the end pyramids of a ring whatever their apex, and its
-// triangles next to the ring run under their lateral faces.
 // The boxes of the lateral edges (corner k to the apex), each inside the pyramid's box.
 std::array<Box, 4> lateral_edge_boxes(const NewPyramid& y) {
     std::array<Box, 4> box;
@@ -146,6 +137,15 @@ std::array<Box, 4> lateral_edge_boxes(const NewPyramid& y) {
     return box;
 }
 
+// "The distance between the new edges and visible edges": a new edge X-P fails where it
+// comes nearer to a front edge than the threshold and than its base corner X already is.
+// Not measured: edges that touch the base's immediate neighbourhood (an end is a node of a
+// front face at a base corner) or the fan of an existing apex. A new edge leaves the base
+// corner X across those faces, so its nearness to such edges is the angle it makes with
+// them — which the apex-to-face distance already bounds — times the size of the input's
+// triangles there; no apex position can change the latter. A host face, for one, lies a
+// fixed half axial step below the end pyramids of a ring whatever their apex, and its
+// triangles next to the ring run under their lateral faces.
 bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
     const index_t apex = y.node[4];
     ApexFan fan;
@@ -219,8 +219,8 @@ bool base_side(const NewPyramid& y, const VisibleEdge& e) {
 // meets the face only there when its other end is off the face's plane.
 bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
     std::array<Box, 4> tbox;
-    std::array<PlaneFilter, 4> plane{PlaneFilter(y.p[0], y.p[1], y.p[4]), PlaneFilter(y.p[1], y.p[2], y.p[4]),
-                                     PlaneFilter(y.p[2], y.p[3], y.p[4]), PlaneFilter(y.p[3], y.p[0], y.p[4])};
+    const std::array<PlaneFilter, 4> plane{PlaneFilter(y.p[0], y.p[1], y.p[4]), PlaneFilter(y.p[1], y.p[2], y.p[4]),
+                                           PlaneFilter(y.p[2], y.p[3], y.p[4]), PlaneFilter(y.p[3], y.p[0], y.p[4])};
     for (int f = 0; f < 4; ++f) {
         tbox[f] = Box::of(y.p[f]);
         tbox[f].add(y.p[(f + 1) % 4]);

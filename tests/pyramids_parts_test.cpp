@@ -1,15 +1,18 @@
 // Parts of the pyramid layer on their own: exact segment/triangle contact with shared
-// nodes (the coplanar cases a straight ring produces everywhere), and conflict-free batches.
+// nodes (the coplanar cases a straight ring produces everywhere) and its double filter, and
+// conflict-free batches.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <set>
 #include <vector>
 
 #include "engine/pyramids/batches.hpp"
 #include "engine/pyramids/contacts.hpp"
+#include "engine/predicates/predicates.hpp"
 #include "engine/pyramids/fronts.hpp"
 #include "tests/support/ring_scene.hpp"
 
@@ -55,6 +58,79 @@ TEST_F(PyramidContact, UnsharedContactOfAnyKindIsRefused) {
     EXPECT_TRUE(contact(30, {0.2, 0.2, 0}, 31, {0.2, 0.2, 1}));   // ending on the face
     EXPECT_FALSE(contact(30, {2, 2, -1}, 31, {2, 2, 1}));
     EXPECT_FALSE(contact(30, {0.2, 0.2, 0.1}, 31, {0.2, 0.2, 1}));
+}
+
+// The double filter never claims "off the plane" where the exact orient3d says coplanar or
+// the other sign matters: whenever it decides, orient3d is not 0. On points in general
+// position it decides nearly always; on exactly coplanar points, points rounded onto the plane
+// and lengths outside its range, never.
+TEST(PyramidOffPlane, DecidesOnlyWhatTheExactPredicateSays) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const auto random_point = [&](double scale) { return Vec3{scale * u(rng), scale * u(rng), scale * u(rng)}; };
+    int decided = 0;
+    const int trials = 20000;
+    for (int i = 0; i < trials; ++i) {
+        const double scale = std::pow(10.0, static_cast<int>(rng() % 13) - 6);
+        const Vec3 s = random_point(scale), b = random_point(scale), c = random_point(scale), x = random_point(scale);
+        if (!surely_off_plane(s, b, c, x)) continue;
+        ++decided;
+        EXPECT_NE(predicates::orient3d(s, b, c, x), 0);
+    }
+    EXPECT_GT(decided, trials * 99 / 100);
+
+    int exact_zero = 0;
+    for (int i = 0; i < trials; ++i) {
+        // x on the plane of s, b, c up to rounding (and exactly on it for the lattice case).
+        const Vec3 s = random_point(1), b = random_point(1), c = random_point(1);
+        const double l = u(rng), m = u(rng);
+        const Vec3 x = i % 2 == 0 ? s + l * (b - s) + m * (c - s) : Vec3{l, m, 0};
+        const Vec3 p = i % 2 == 0 ? s : Vec3{s.x, s.y, 0}, q = i % 2 == 0 ? b : Vec3{b.x, b.y, 0},
+                   r = i % 2 == 0 ? c : Vec3{c.x, c.y, 0};
+        exact_zero += predicates::orient3d(p, q, r, x) == 0;
+        EXPECT_FALSE(surely_off_plane(p, q, r, x));
+        // Slightly off the plane: decided or not, never against the exact sign's being 0.
+        const Vec3 off = x + Vec3{0, 0, 1e-7};
+        if (surely_off_plane(p, q, r, off)) {
+            EXPECT_NE(predicates::orient3d(p, q, r, off), 0);
+        }
+    }
+    EXPECT_GE(exact_zero, trials / 2);  // the points in z = 0 at least
+
+    // Degenerate triangles (a repeated node, collinear nodes) and lengths out of range.
+    const Vec3 o{0, 0, 0}, e{1, 0, 0}, up{0, 0, 1};
+    EXPECT_FALSE(surely_off_plane(o, o, e, up));
+    EXPECT_FALSE(surely_off_plane(o, e, Vec3{2, 0, 0}, up));
+    EXPECT_FALSE(surely_off_plane(o, Vec3{1e-80, 0, 0}, Vec3{0, 1e-80, 0}, Vec3{0, 0, 1e-80}));
+    EXPECT_FALSE(surely_off_plane(o, Vec3{1e80, 0, 0}, Vec3{0, 1e80, 0}, Vec3{0, 0, 1e80}));
+    EXPECT_TRUE(surely_off_plane(o, e, Vec3{0, 1, 0}, up));
+    EXPECT_TRUE(surely_off_plane(o, e, Vec3{0, 1, 0}, Vec3{0.3, 0.3, -1e-6}));
+}
+
+// The plane made once and asked from any node of its triangle (the criteria measure a segment
+// from the node it shares): the same guarantee, here on nearly flat triangles and on points
+// near the plane, where the margin matters.
+TEST(PyramidOffPlane, APlaneAskedFromAnyNodeDecidesOnlyWhatTheExactPredicateSays) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int decided = 0, undecided = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 a{u(rng), u(rng), 0}, b{u(rng), u(rng), 1e-12 * u(rng)};
+        const Vec3 c = i % 3 == 0 ? a + 1e-6 * (b - a) + Vec3{1e-9 * u(rng), 0, 0}  // a needle
+                                  : Vec3{u(rng), u(rng), 1e-3 * u(rng)};
+        const Vec3 x{u(rng), u(rng), std::pow(10.0, -static_cast<int>(rng() % 16)) * u(rng)};
+        const PlaneFilter plane(a, b, c);
+        for (const Vec3& s : {a, b, c}) {
+            if (!plane.surely_off(s, x)) {
+                ++undecided;
+                continue;
+            }
+            ++decided;
+            EXPECT_NE(predicates::orient3d(a, b, c, x), 0);
+        }
+    }
+    EXPECT_GT(decided, 0);
+    EXPECT_GT(undecided, 0);  // the points nearest the plane are left to the exact predicate
 }
 
 TEST(PyramidBatches, NoTwoNeighboursShareABatchAndEveryFrontHasOne) {

@@ -59,33 +59,44 @@ bool separated(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const
     return behind(a, cross(n, ab)) || behind(b, cross(n, c - b)) || behind(c, cross(n, a - c));
 }
 
+// The segment shares no node with the triangle.
+[[gnu::noinline]] bool contact_unshared(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return !separated(p, q, a, b, c) && predicates::segment_triangle(p, q, a, b, c) != predicates::Contact::None;
+}
+
+// The segment s-other shares node s with the closed triangle (s, b, c), not known to leave its
+// plane: it meets the triangle elsewhere exactly when it lies in that plane and points into it.
+[[gnu::noinline]] bool contact_beyond_shared(const Vec3& s, const Vec3& other, const Vec3& b, const Vec3& c,
+                                             const NewPyramid& y) {
+    if (leaves_angle(s, other, b, c)) return false;
+    if (predicates::orient3d(s, b, c, other) != 0) return false;
+    for (const Vec3& x : y.p)
+        if (predicates::orient3d(s, b, c, x) != 0) return overlaps_beyond_shared(s, other, b, c, x);
+    return true;  // a flat triangle: refuse
+}
+
+int corner_of(index_t n, const std::array<index_t, 3>& it) {
+    if (n == kNoIndex) return -1;
+    return n == it[0] ? 0 : n == it[1] ? 1 : n == it[2] ? 2 : -1;
+}
+
 }  // namespace
 
 bool improper_contact(index_t ip, const Vec3& p, index_t iq, const Vec3& q, const std::array<index_t, 3>& it,
                       const std::array<const Vec3*, 3>& t, const NewPyramid& y) {
-    auto corner_of = [&](index_t n) {
-        if (n == kNoIndex) return -1;
-        for (int k = 0; k < 3; ++k)
-            if (n == it[k]) return k;
-        return -1;
-    };
-    const int cp = corner_of(ip), cq = corner_of(iq);
+    const int cp = corner_of(ip, it), cq = corner_of(iq, it);
     if (cp >= 0 && cq >= 0) return false;  // the segment is an edge of the triangle
-    const Vec3 &ra = *t[0], &rb = *t[1], &rc = *t[2];
-    if (cp < 0 && cq < 0)
-        return !separated(p, q, ra, rb, rc) && predicates::segment_triangle(p, q, ra, rb, rc) != predicates::Contact::None;
+    if (cp < 0 && cq < 0) return contact_unshared(p, q, *t[0], *t[1], *t[2]);
     // Sharing one node, the segment meets the triangle's plane only there unless it lies in
-    // that plane; then it meets the triangle elsewhere when it points into it.
+    // that plane; then it meets the triangle elsewhere when it points into it. (s, b, c) is the
+    // triangle turned to start at the shared node: the same orientation.
     const int shared = cp >= 0 ? cp : cq;
     const Vec3& other = cp >= 0 ? q : p;
     const Vec3& s = *t[shared];
-    const Vec3& b = *t[(shared + 1) % 3];
-    const Vec3& c = *t[(shared + 2) % 3];
-    if (leaves_angle(s, other, b, c)) return false;
-    if (predicates::orient3d(ra, rb, rc, other) != 0) return false;
-    for (const Vec3& x : y.p)
-        if (predicates::orient3d(ra, rb, rc, x) != 0) return overlaps_beyond_shared(s, other, b, c, x);
-    return true;  // a flat triangle: refuse
+    const Vec3& b = *t[shared == 2 ? 0 : shared + 1];
+    const Vec3& c = *t[shared == 0 ? 2 : shared - 1];
+    if (surely_off_plane(s, b, c, other)) return false;
+    return contact_beyond_shared(s, other, b, c, y);
 }
 
 }  // namespace tubemesh::pyramids

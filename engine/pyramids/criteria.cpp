@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "engine/mesh/edge_key.hpp"
@@ -17,16 +18,6 @@ namespace tubemesh::pyramids {
 namespace {
 
 using predicates::orient3d;
-
-// The triangles a visible face is judged as: (0,1,2) and, for a quad, (0,2,3).
-template <class F>
-bool any_triangle(const VisibleFace& face, F&& f) {
-    if (f(std::array<index_t, 3>{face.node[0], face.node[1], face.node[2]},
-          std::array<const Vec3*, 3>{&face.p[0], &face.p[1], &face.p[2]}))
-        return true;
-    return face.size == 4 && f(std::array<index_t, 3>{face.node[0], face.node[2], face.node[3]},
-                               std::array<const Vec3*, 3>{&face.p[0], &face.p[2], &face.p[3]});
-}
 
 double face_distance2(const VisibleFace& face, const Vec3& p) {
     double d2 = point_triangle_distance2(p, face.p[0], face.p[1], face.p[2]);
@@ -136,6 +127,16 @@ void collect_fan(index_t apex, const Visible& vis, ApexFan& fan) {
     }
 }
 
+// The boxes of the lateral edges (corner k to the apex), each inside the pyramid's box.
+std::array<Box, 4> lateral_edge_boxes(const NewPyramid& y) {
+    std::array<Box, 4> box;
+    for (int k = 0; k < 4; ++k) {
+        box[k] = Box::of(y.p[k]);
+        box[k].add(y.p[4]);
+    }
+    return box;
+}
+
 // "The distance between the new edges and visible edges": a new edge X-P fails where it
 // comes nearer to a front edge than the threshold and than its base corner X already is.
 // Not measured: edges that touch the base's immediate neighbourhood (an end is a node of a
@@ -149,15 +150,17 @@ bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
     const index_t apex = y.node[4];
     ApexFan fan;
     collect_fan(apex, vis, fan);
-    for (int k = 0; k < 4; ++k) {
-        if (!y.edge_new[k]) continue;
-        const Vec3& x = y.p[k];
-        Box ebox = Box::of(x);
-        ebox.add(y.p[4]);
-        for (const VisibleEdge& e : vis.edges) {
-            if (e.near_base) continue;
-            if (apex != kNoIndex && (e.a == apex || e.b == apex)) continue;
-            if (box_distance2(ebox, e.box) >= d2min) continue;
+    const std::array<Box, 4> ebox = lateral_edge_boxes(y);
+    // Any pair fails the candidate, so the front's edges come first: one that is the threshold
+    // away from the pyramid's box is as far from every new edge, whose boxes lie inside it.
+    for (const VisibleEdge& e : vis.edges) {
+        if (e.near_base) continue;
+        if (apex != kNoIndex && (e.a == apex || e.b == apex)) continue;
+        if (box_distance2(y.box, e.box) >= d2min) continue;
+        for (int k = 0; k < 4; ++k) {
+            if (!y.edge_new[k]) continue;
+            if (box_distance2(ebox[k], e.box) >= d2min) continue;
+            const Vec3& x = y.p[k];
             const double d2 = segment_segment_distance2(x, y.p[4], e.pa, e.pb);
             if (d2 >= d2min) continue;
             // Relative slack: when the nearest point is X itself the two computations agree
@@ -170,20 +173,31 @@ bool too_close_to_edge(const NewPyramid& y, const Visible& vis, double d2min) {
     return false;
 }
 
+// As above, faces first: one whose box misses the pyramid's misses every new edge's. A new
+// apex shares no node with a face, so a new edge shares at most its base corner with one of
+// the face's triangles; leaving that corner off the triangle's plane, it meets it there only.
 bool edge_crosses_face(const NewPyramid& y, const Visible& vis) {
-    for (int k = 0; k < 4; ++k) {
-        if (!y.edge_new[k]) continue;
-        Box ebox = Box::of(y.p[k]);
-        ebox.add(y.p[4]);
-        const index_t a = y.node[k], b = y.node[4];
-        for (const VisibleFace& face : vis.faces) {
-            if (face.role == FaceRole::Own || !face.box.overlaps(ebox)) continue;
+    const std::array<Box, 4> ebox = lateral_edge_boxes(y);
+    const index_t b = y.node[4];
+    for (const VisibleFace& face : vis.faces) {
+        if (face.role == FaceRole::Own || !face.box.overlaps(y.box)) continue;
+        // Per triangle of the face: 1 the apex is surely off its plane, 0 not known, -1 not asked.
+        std::array<int, 2> apex_off{-1, -1};
+        for (int k = 0; k < 4; ++k) {
+            if (!y.edge_new[k] || !face.box.overlaps(ebox[k])) continue;
+            const index_t a = y.node[k];
             // Both ends on a quad that has no such edge: the new edge is its diagonal.
             if (face.size == 4 && face.has(a) && b != kNoIndex && face.has(b)) return true;
-            if (any_triangle(face, [&](const std::array<index_t, 3>& it, const std::array<const Vec3*, 3>& t) {
-                    return improper_contact(a, y.p[k], b, y.p[4], it, t, y);
-                }))
-                return true;
+            for (int tri = 0; tri < face.size - 2; ++tri) {
+                const int c1 = tri + 1, c2 = tri + 2;  // triangles (0, 1, 2) and (0, 2, 3)
+                const std::array<index_t, 3> it{face.node[0], face.node[c1], face.node[c2]};
+                const std::array<const Vec3*, 3> t{&face.p[0], &face.p[c1], &face.p[c2]};
+                if (b == kNoIndex && (a == it[0] || a == it[1] || a == it[2])) {
+                    if (apex_off[tri] < 0) apex_off[tri] = PlaneFilter(*t[0], *t[1], *t[2]).surely_off(*t[0], y.p[4]);
+                    if (apex_off[tri] == 1) continue;
+                }
+                if (improper_contact(a, y.p[k], b, y.p[4], it, t, y)) return true;
+            }
         }
     }
     return false;
@@ -200,17 +214,31 @@ bool base_side(const NewPyramid& y, const VisibleEdge& e) {
     return false;
 }
 
+// Edges first, as above: one whose box misses the pyramid's misses every lateral face's. A
+// front edge with one end at a base corner of a lateral face (a new apex is no edge's end)
+// meets the face only there when its other end is off the face's plane.
 bool face_crosses_edge(const NewPyramid& y, const Visible& vis) {
+    std::array<Box, 4> tbox;
+    const std::array<PlaneFilter, 4> plane{PlaneFilter(y.p[0], y.p[1], y.p[4]), PlaneFilter(y.p[1], y.p[2], y.p[4]),
+                                           PlaneFilter(y.p[2], y.p[3], y.p[4]), PlaneFilter(y.p[3], y.p[0], y.p[4])};
     for (int f = 0; f < 4; ++f) {
-        if (!y.face_new[f]) continue;
-        const int g = (f + 1) % 4;
-        const std::array<index_t, 3> it{y.node[f], y.node[g], y.node[4]};
-        const std::array<const Vec3*, 3> t{&y.p[f], &y.p[g], &y.p[4]};
-        Box tbox = Box::of(y.p[f]);
-        tbox.add(y.p[g]);
-        tbox.add(y.p[4]);
-        for (const VisibleEdge& e : vis.edges) {
-            if (!e.box.overlaps(tbox) || base_side(y, e)) continue;
+        tbox[f] = Box::of(y.p[f]);
+        tbox[f].add(y.p[(f + 1) % 4]);
+        tbox[f].add(y.p[4]);
+    }
+    const bool new_apex = y.node[4] == kNoIndex;
+    for (const VisibleEdge& e : vis.edges) {
+        if (!e.box.overlaps(y.box) || base_side(y, e)) continue;
+        for (int f = 0; f < 4; ++f) {
+            if (!y.face_new[f] || !e.box.overlaps(tbox[f])) continue;
+            const int g = (f + 1) % 4;
+            if (new_apex) {
+                // Not both ends at f and g: that is a base side, skipped above.
+                const int at = e.a == y.node[f] || e.b == y.node[f] ? f : e.a == y.node[g] || e.b == y.node[g] ? g : -1;
+                if (at >= 0 && plane[f].surely_off(y.p[at], e.a == y.node[at] ? e.pb : e.pa)) continue;
+            }
+            const std::array<index_t, 3> it{y.node[f], y.node[g], y.node[4]};
+            const std::array<const Vec3*, 3> t{&y.p[f], &y.p[g], &y.p[4]};
             if (improper_contact(e.a, e.pa, e.b, e.pb, it, t, y)) return true;
         }
     }
@@ -272,8 +300,11 @@ Verdict judge(const Front& f, const Candidate& c, const Thresholds& t, const Vis
     if (orient3d(p[0], p[1], p[2], p[4]) <= 0 || orient3d(p[0], p[2], p[3], p[4]) <= 0 ||
         orient3d(p[0], p[1], p[3], p[4]) <= 0 || orient3d(p[1], p[2], p[3], p[4]) <= 0)
         return Verdict::NotPositive;
-    if (f.quality_floor > 0 && pyramid_scaled_jacobian({p[0], p[1], p[2], p[3], p[4]}) < f.quality_floor)
-        return Verdict::LowQuality;
+    if (f.quality_floor > 0) {
+        const bool ideal = c.id == kNoIndex && std::memcmp(&c.p, &f.ideal, sizeof(Vec3)) == 0;
+        const double quality = ideal ? f.ideal_quality : pyramid_scaled_jacobian({p[0], p[1], p[2], p[3], p[4]});
+        if (quality < f.quality_floor) return Verdict::LowQuality;
+    }
     if (!match_existing(y, vis, state)) return Verdict::FaceMismatch;
     if (!keeps_front_manifold(y, vis)) return Verdict::PinchesFront;
 

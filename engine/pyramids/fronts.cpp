@@ -80,6 +80,7 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
         }
     }
     f.wide = wide.value_or(f.ideal);
+    f.ideal_quality = f.wedge || f.lowered ? pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], f.ideal}) : ideal_quality;
     f.candidate_radius = opt.search_radius_factor * f.h;
     // Try nodes lie between M and N, at most |MN|·(1 - Rate_K) from N.
     const double lowest_rate = std::pow(opt.relax_rate, std::max(opt.try_nodes, 0));

@@ -43,6 +43,8 @@ struct alignas(64) Front {
     // min(min_quality, min_quality_ratio · the ideal pyramid's score), so a front whose
     // quad is too elongated for even its ideal pyramid to reach min_quality still gets one.
     double quality_floor;
+    // The scaled Jacobian of the pyramid with apex N, the candidate most fronts take.
+    double ideal_quality;
     // The second apex of a wedge front (PyramidOptions::wedge_wide_shift), tried in the normal
     // pass when N is refused; N itself when there is none.
     Vec3 wide;

@@ -10,20 +10,22 @@ namespace tubemesh::pyramids {
 namespace {
 
 // Adds the face when its box comes within the query radius of N (and within the focus).
-void add_face(const Front& f, const Focus& focus, const index_t* nodes, const Vec3* const* p, int size, FaceRole role,
-              Visible& out) {
+// Inlined: the gather calls it for every face near every front.
+[[gnu::always_inline]] inline void add_face(const Front& f, const Focus& focus, const index_t* nodes,
+                                            const Vec3* const* p, int size, FaceRole role, Visible& out) {
     Box box = Box::of(*p[0]);
     for (int k = 1; k < size; ++k) box.add(*p[k]);
     if (box_distance2(box, f.ideal) >= f.query_radius * f.query_radius) return;
     if (!focus.all && box_distance2(box, focus.box) > focus.margin2) return;
-    VisibleFace& face = out.faces.emplace_back();
+    VisibleFace face;  // every field set below; emplace_back() would zero it first
     face.size = static_cast<std::uint8_t>(size);
     face.role = role;
     face.box = box;
     face.node = {nodes[0], nodes[1], nodes[2], size == 4 ? nodes[3] : kNoIndex};
-    face.p[3] = {};
     for (int k = 0; k < size; ++k) face.p[k] = *p[k];
+    if (size == 3) face.p[3] = {};
     face.at_base = face.has(f.node[0]) || face.has(f.node[1]) || face.has(f.node[2]) || face.has(f.node[3]);
+    out.faces.push_back(face);
 }
 
 // The same for faces whose coordinates must be looked up.
@@ -48,6 +50,26 @@ Box query_box(const Front& f, const Focus& focus) {
     return q;
 }
 
+// Appends the node to out.nodes when it lies strictly within reach of N (and, with a focus,
+// inside its box).
+[[gnu::always_inline]] inline void consider_node(const Front& f, const Focus& focus, index_t id, const Vec3& p,
+                                                 Visible& out) {
+    if (!focus.all && !focus.box.contains(p)) return;
+    const double d2 = distance2(f.ideal, p);
+    if (d2 < f.reach * f.reach) out.nodes.push_back({id, p, d2});
+}
+
+// The nodes of neighbour g (its corners, its apex if built) that consider_node keeps. Every
+// apex a front can see belongs to a neighbour.
+void consider_nodes_of(const Front& f, const Focus& focus, const FrontState& s, index_t j, const Front& g,
+                       Visible& out) {
+    for (int k = 0; k < 4; ++k) consider_node(f, focus, g.node[k], g.corner[k], out);
+    if (s.has_pyramid(j)) consider_node(f, focus, s.apex(j), s.point(s.apex(j)), out);
+}
+
+// With a focus, the neighbours' nodes are collected here, in the same pass over them
+// (collect_nodes takes the rest): a neighbour's nodes lie in the box `around` of its corners and
+// apex, so none is inside the focus box when that box does not touch it.
 void collect_faces(const World& w, index_t i, const Focus& focus, Visible& out) {
     const Front& f = w.fronts[i];
     const FrontState& s = w.state;
@@ -75,7 +97,10 @@ void collect_faces(const World& w, index_t i, const Focus& focus, Visible& out) 
     for (index_t j : w.neighbours.row(i)) {
         const Front& g = w.fronts[j];
         const double apart = f.query_radius + g.reach;
-        if (distance2(f.ideal, g.ideal) >= apart * apart) continue;
+        if (distance2(f.ideal, g.ideal) >= apart * apart) {
+            if (!focus.all) consider_nodes_of(f, focus, s, j, g, out);
+            continue;
+        }
         const bool built = s.has_pyramid(j);
         const index_t apex = built ? s.apex(j) : kNoIndex;
         const Vec3 top = built ? s.point(apex) : Vec3{};
@@ -83,7 +108,9 @@ void collect_faces(const World& w, index_t i, const Focus& focus, Visible& out) 
             Box around = Box::of(g.corner[0]);
             for (int k = 1; k < 4; ++k) around.add(g.corner[k]);
             if (built) around.add(top);
-            if (box_distance2(around, focus.box) > focus.margin2) continue;
+            const double gap2 = box_distance2(around, focus.box);
+            if (gap2 == 0) consider_nodes_of(f, focus, s, j, g, out);
+            if (gap2 > focus.margin2) continue;
         }
         if (!built) {
             const Vec3* quad[4] = {&g.corner[0], &g.corner[1], &g.corner[2], &g.corner[3]};
@@ -145,17 +172,20 @@ void collect_edges(Visible& out) {
     for (const VisibleFace& face : out.faces)
         if (face.at_base)
             for (int k = 0; k < face.size; ++k) mark_base(out, face.node[k]);
-    const auto near_base = [&](index_t n) { return n < out.base_mark.size() && out.base_mark[n] == out.stamp; };
+    const std::uint32_t* base = out.base_mark.data();
+    const std::size_t base_size = out.base_mark.size();
+    const std::uint32_t stamp = out.stamp;
+    const auto near_base = [&](index_t n) { return n < base_size && base[n] == stamp; };
     for (const VisibleFace& face : out.faces) {
         for (int k = 0; k < face.size; ++k) {
             const int l = k + 1 == face.size ? 0 : k + 1;
             if (!insert_edge(out, edge_key(face.node[k], face.node[l]))) continue;
+            const int first = face.node[l] < face.node[k] ? l : k, second = first == k ? l : k;
             VisibleEdge e;
-            const bool swap = face.node[l] < face.node[k];
-            e.a = swap ? face.node[l] : face.node[k];
-            e.b = swap ? face.node[k] : face.node[l];
-            e.pa = swap ? face.p[l] : face.p[k];
-            e.pb = swap ? face.p[k] : face.p[l];
+            e.a = face.node[first];
+            e.b = face.node[second];
+            e.pa = face.p[first];
+            e.pb = face.p[second];
             e.box = Box::of(e.pa);
             e.box.add(e.pb);
             e.near_base = near_base(e.a) || near_base(e.b);
@@ -172,24 +202,17 @@ void collect_edges(Visible& out) {
 void collect_nodes(const World& w, index_t i, const Focus& focus, Visible& out) {
     const Front& f = w.fronts[i];
     const FrontState& s = w.state;
-    const double reach2 = f.reach * f.reach;
-    const auto consider = [&](index_t id, const Vec3& p) {
-        if (!focus.all && !focus.box.contains(p)) return;
-        const double d2 = distance2(f.ideal, p);
-        if (d2 < reach2) out.nodes.push_back({id, p, d2});
-    };
-    for (int k = 0; k < 4; ++k) consider(f.node[k], f.corner[k]);
+    for (int k = 0; k < 4; ++k) consider_node(f, focus, f.node[k], f.corner[k], out);
     for (index_t id : out.hits) {
         if (id >= w.boundary_count) break;  // obstacle quads (sorted after): their nodes are no candidates
         const Triangle t = s.boundary(id);
-        for (index_t n : t) consider(n, s.point(n));
+        for (index_t n : t) consider_node(f, focus, n, s.point(n), out);
     }
-    for (index_t j : w.neighbours.row(i)) {
-        const Front& g = w.fronts[j];
-        for (int k = 0; k < 4; ++k) consider(g.node[k], g.corner[k]);
-        // Apexes: every apex a front can see belongs to a neighbour.
-        if (s.has_pyramid(j)) consider(s.apex(j), s.point(s.apex(j)));
-    }
+    // With a focus only a new apex is judged: the nodes are only tested for lying inside its
+    // pyramid, which a repeated node does not change, and there are no candidates. The
+    // neighbours' nodes are in already (collect_faces).
+    if (!focus.all) return;
+    for (index_t j : w.neighbours.row(i)) consider_nodes_of(f, focus, s, j, w.fronts[j], out);
     std::sort(out.nodes.begin(), out.nodes.end(), [](const NearNode& l, const NearNode& r) { return l.id < r.id; });
     out.nodes.erase(std::unique(out.nodes.begin(), out.nodes.end(),
                                 [](const NearNode& l, const NearNode& r) { return l.id == r.id; }),

@@ -66,8 +66,10 @@ struct World {
 struct Visible {
     std::vector<VisibleFace> faces;
     std::vector<VisibleEdge> edges;    // each once, in the order the faces first name them
-    std::vector<NearNode> nodes;       // within reach of N: may lie inside a new pyramid
+    std::vector<NearNode> nodes;       // within reach of N: may lie inside a new pyramid (each
+                                       // once, but with a focus where a node may repeat)
     std::vector<NearNode> candidates;  // on the front, within the candidate radius, nearest first
+                                       // (none with a focus)
     std::vector<index_t> hits, stack;  // fixed faces near N, sorted; the face tree's stack
 
     // An edge (a, b) of the visible faces (either order).

@@ -19,12 +19,18 @@ Vec3 across(const Vec3& v, const Vec3& e) { return v - dot(v, e) * e; }
 BoundaryEdges::BoundaryEdges(std::span<const index_t> triangles) {
     edges_.reserve(triangles.size());
     for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
-        for (int k = 0; k < 3; ++k)
-            edges_.emplace_back(edge_key(triangles[t + k], triangles[t + (k + 1) % 3]), triangles[t + (k + 2) % 3]);
+        for (int k = 0; k < 3; ++k) {
+            const index_t n = triangles[t + k];
+            if (n >= on_boundary_.size()) on_boundary_.resize(std::size_t{n} + 1 + on_boundary_.size() / 2, false);
+            on_boundary_[n] = true;
+            edges_.emplace_back(edge_key(n, triangles[t + (k + 1) % 3]), triangles[t + (k + 2) % 3]);
+        }
     std::sort(edges_.begin(), edges_.end());
 }
 
 index_t BoundaryEdges::opposite(index_t a, index_t b) const {
+    const auto on = [&](index_t n) { return n < on_boundary_.size() && on_boundary_[n]; };
+    if (!on(a) || !on(b)) return kNoIndex;
     const std::uint64_t key = edge_key(a, b);
     const auto first = std::lower_bound(edges_.begin(), edges_.end(), std::pair{key, index_t{0}});
     if (first == edges_.end() || first->first != key) return kNoIndex;

@@ -31,6 +31,9 @@ public:
 
 private:
     std::vector<std::pair<std::uint64_t, index_t>> edges_;
+    // Per node id up to the largest in a triangle: it is a triangle's node. Most front quads have
+    // no such node, and their edges are not searched for.
+    std::vector<bool> on_boundary_;
 };
 
 // The ideal apex of one front as an offset from its centroid M: N = M + shift + height·n.

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 #include <vector>
@@ -308,6 +309,46 @@ TEST(test_tets_optimise, IncidenceAndColouringMatchTheSerialGreedy) {
             }
         });
     }
+}
+
+// star_quality evaluates tets two at a time: the same bits as one tet at a time (a star of one
+// tet each), and it stops at the same tet for any give-up value.
+TEST(test_tets_optimise, StarQualityInPairsMatchesTetByTet) {
+    const TetDomain d = sphere_domain(400, 1600, 5);
+    const Incidence inc = build_incidence(d);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+    StarCorners whole, single;
+    std::size_t checked = 0;
+    for (index_t p = d.front_points; p < d.point_count(); p += 7) {
+        const auto star = inc.of(p);
+        ASSERT_GE(star.size(), 4u);
+        gather_star_corners(d, p, star, whole);
+        std::vector<double> q(star.size());
+        for (int trial = 0; trial < 4; ++trial) {
+            const Vec3 x = point_vec(d, p) + Vec3{jitter(rng), jitter(rng), jitter(rng)};
+            for (std::size_t k = 0; k < star.size(); ++k) {
+                gather_star_corners(d, p, star.subspan(k, 1), single);
+                q[k] = star_quality(single, x).sum;
+            }
+            // Give up nowhere, at the median tet's value and at the first tet's.
+            std::vector<double> sorted = q;
+            std::ranges::sort(sorted);
+            for (double give_up : {-std::numeric_limits<double>::infinity(), sorted[sorted.size() / 2], q[0]}) {
+                StarQuality expected;
+                for (double v : q) {
+                    expected.worst = std::min(expected.worst, v);
+                    expected.sum += v;
+                    if (v <= give_up) break;
+                }
+                const StarQuality got = star_quality(whole, x, give_up);
+                EXPECT_EQ(std::memcmp(&got.worst, &expected.worst, sizeof(double)), 0) << p;
+                EXPECT_EQ(std::memcmp(&got.sum, &expected.sum, sizeof(double)), 0) << p;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 500u);
 }
 
 TEST(test_tets_optimise, RejectsBadOptions) {

@@ -19,12 +19,15 @@ namespace tubemesh {
 // is 3V / A_i^(3/2), with 3V = det / 2 and det = 6V the signed orientation determinant. Its
 // minimum over the vertices is at the largest face when V > 0 and at the smallest one when
 // V < 0 (the most negative value), so only one face area is needed.
+
+// The regular tet's value, edge a: height a·sqrt(2/3) over sqrt(sqrt(3)/4·a²). a cancels, so
+// this is exact and not the rounded 1.2408 of the paper (folded to a constant when inlined).
+inline double regular_tet_collapse_scale() { return std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0); }
+
 // The collapse from 3V and the four faces' 4·area² values (in any order): for callers that
 // already hold some of them (the smoothing keeps the face opposite a moving point).
 inline double tet_collapse_from(double three_volume, const std::array<double, 4>& area4) {
-    // The regular tet's value, edge a: height a·sqrt(2/3) over sqrt(sqrt(3)/4·a²). a cancels,
-    // so this is exact and not the rounded 1.2408 of the paper.
-    const double regular = std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0);
+    const double regular = regular_tet_collapse_scale();
     const auto [a, b, c, d] = area4;
     const double area = 0.5 * std::sqrt(three_volume < 0 ? std::min({a, b, c, d}) : std::max({a, b, c, d}));
     // V < 0 implies every face has an area; a zero area here means V = 0 and the four

@@ -8,6 +8,10 @@
 #include <span>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -33,14 +37,14 @@ Vec3 ascent_direction(const StarCorners& star, std::span<const double> collapse)
         const double q = collapse[k_star];
         if (!(q > 0)) continue;
         const auto& f = kTetFaceToward[lp];
-        const Vec3 opposite = cross(c[f[1]] - c[f[0]], c[f[2]] - c[f[0]]);  // toward p
+        const Vec3& opposite = star.opposite[k_star].n;  // toward p
         const double three_volume = 0.5 * dot(c[lp] - c[f[0]], opposite);
-        // The largest face and its area.
+        // The largest face and its area (the face opposite p's is known).
         int largest = 0;
         double area2 = -1;
         for (int k = 0; k < 4; ++k) {
             const auto& h = kTetFaceToward[k];
-            const double a2 = norm2(cross(c[h[1]] - c[h[0]], c[h[2]] - c[h[0]]));
+            const double a2 = k == lp ? star.opposite[k_star].area4 : norm2(cross(c[h[1]] - c[h[0]], c[h[2]] - c[h[0]]));
             if (a2 > area2) {
                 area2 = a2;
                 largest = k;
@@ -291,16 +295,22 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     return counts;
 }
 
-void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out) {
+void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out,
+                         bool with_faces) {
     out.corners.resize(star.size());
     out.at.resize(star.size());
-    out.opposite.resize(star.size());
     for (std::size_t k = 0; k < star.size(); ++k) {
         const index_t* v = dom.tets.vertex(star[k]);
         for (int i = 0; i < 4; ++i) {
             out.corners[k][i] = point_vec(dom, v[i]);
             if (v[i] == p) out.at[k] = static_cast<std::uint8_t>(i);
         }
+    }
+    if (!with_faces) return;
+    out.opposite.resize(star.size());
+    // Tets 1, 2, ... also in pairs (tet 0, the old worst, is evaluated alone: most trials stop there).
+    out.paired.resize((star.size() > 1 ? (star.size() - 1) / 2 : 0) * StarCorners::kPairStride);
+    for (std::size_t k = 0; k < star.size(); ++k) {
         const auto& f = kTetFaceToward[out.at[k]];
         StarCorners::Opposite& o = out.opposite[k];
         o.a = out.corners[k][f[0]];
@@ -308,6 +318,13 @@ void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_
         o.c = out.corners[k][f[2]];
         o.n = cross(o.b - o.a, o.c - o.a);
         o.area4 = norm2(o.n);
+        if (k == 0) continue;
+        const std::size_t block = (k - 1) / 2 * StarCorners::kPairStride;
+        if (block >= out.paired.size()) continue;  // the last of an even count: alone
+        double* lane = out.paired.data() + block + (k - 1) % 2;
+        const double values[13] = {o.a.x, o.a.y, o.a.z, o.b.x, o.b.y, o.b.z, o.c.x,
+                                   o.c.y, o.c.z, o.n.x, o.n.y, o.n.z, o.area4};
+        for (int i = 0; i < 13; ++i) lane[2 * i] = values[i];
     }
 }
 
@@ -346,16 +363,65 @@ double collapse_with(const StarCorners::Opposite& o, const Vec3& x) {
                              {o.area4, norm2(cross(xa, xb)), norm2(cross(xb, xc)), norm2(cross(xc, xa))});
 }
 
+#if defined(__SSE2__)
+// collapse_with for two tets at once (a pair block of StarCorners::paired), written to q[0..1]:
+// the same operations in the same order per lane, so the same bits as collapse_with.
+void collapse_with_pair(const double* block, const Vec3& x, double q[2]) {
+    const auto at = [&](int i) { return _mm_loadu_pd(block + 2 * i); };
+    const __m128d px = _mm_set1_pd(x.x), py = _mm_set1_pd(x.y), pz = _mm_set1_pd(x.z);
+    const __m128d ax = _mm_sub_pd(at(0), px), ay = _mm_sub_pd(at(1), py), az = _mm_sub_pd(at(2), pz);
+    const __m128d bx = _mm_sub_pd(at(3), px), by = _mm_sub_pd(at(4), py), bz = _mm_sub_pd(at(5), pz);
+    const __m128d cx = _mm_sub_pd(at(6), px), cy = _mm_sub_pd(at(7), py), cz = _mm_sub_pd(at(8), pz);
+    // dot(u, v) = (u.x v.x + u.y v.y) + u.z v.z, as vec3_ops.hpp.
+    const auto dot2 = [](__m128d ux, __m128d uy, __m128d uz, __m128d vx, __m128d vy, __m128d vz) {
+        return _mm_add_pd(_mm_add_pd(_mm_mul_pd(ux, vx), _mm_mul_pd(uy, vy)), _mm_mul_pd(uz, vz));
+    };
+    // norm2(cross(u, v)), cross as vec3_ops.hpp.
+    const auto cross_norm2 = [&](__m128d ux, __m128d uy, __m128d uz, __m128d vx, __m128d vy, __m128d vz) {
+        const __m128d wx = _mm_sub_pd(_mm_mul_pd(uy, vz), _mm_mul_pd(uz, vy));
+        const __m128d wy = _mm_sub_pd(_mm_mul_pd(uz, vx), _mm_mul_pd(ux, vz));
+        const __m128d wz = _mm_sub_pd(_mm_mul_pd(ux, vy), _mm_mul_pd(uy, vx));
+        return dot2(wx, wy, wz, wx, wy, wz);
+    };
+    const __m128d three_volume = _mm_mul_pd(_mm_set1_pd(-0.5), dot2(ax, ay, az, at(9), at(10), at(11)));
+    const __m128d f0 = at(12), f1 = cross_norm2(ax, ay, az, bx, by, bz), f2 = cross_norm2(bx, by, bz, cx, cy, cz),
+                  f3 = cross_norm2(cx, cy, cz, ax, ay, az);
+    // std::max({f0..f3}) keeps r unless r < f: maxpd(f, r) is (f > r ? f : r), the same for NaNs
+    // too; std::min({..}) takes f when f < r: minpd(f, r).
+    const __m128d largest = _mm_max_pd(f3, _mm_max_pd(f2, _mm_max_pd(f1, f0)));
+    const __m128d smallest = _mm_min_pd(f3, _mm_min_pd(f2, _mm_min_pd(f1, f0)));
+    const __m128d negative = _mm_cmplt_pd(three_volume, _mm_setzero_pd());
+    const __m128d chosen = _mm_or_pd(_mm_and_pd(negative, smallest), _mm_andnot_pd(negative, largest));
+    const __m128d area = _mm_mul_pd(_mm_set1_pd(0.5), _mm_sqrt_pd(chosen));
+    const __m128d value = _mm_div_pd(_mm_div_pd(three_volume, _mm_mul_pd(area, _mm_sqrt_pd(area))),
+                                     _mm_set1_pd(regular_tet_collapse_scale()));
+    const __m128d has_area = _mm_cmpgt_pd(area, _mm_setzero_pd());
+    _mm_storeu_pd(q, _mm_and_pd(has_area, value));  // 0 where !(area > 0)
+}
+#endif
+
 }  // namespace
 
 StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up) {
     StarQuality s;
-    for (std::size_t k = 0; k < star.corners.size(); ++k) {
-        const double q = collapse_with(star.opposite[k], x);
+    // Adds tet k's q; false when the caller stops there.
+    const auto add = [&](double q) {
         s.worst = std::min(s.worst, q);
         s.sum += q;
-        if (q <= give_up) break;
+        return !(q <= give_up);
+    };
+    const std::size_t n = star.corners.size();
+    std::size_t k = 0;
+    if (k < n && !add(collapse_with(star.opposite[k++], x))) return s;
+#if defined(__SSE2__)
+    for (std::size_t j = 0; k + 1 < n; ++j, k += 2) {
+        double q[2];
+        collapse_with_pair(star.paired.data() + j * StarCorners::kPairStride, x, q);
+        if (!add(q[0]) || !add(q[1])) return s;
     }
+#endif
+    for (; k < n; ++k)
+        if (!add(collapse_with(star.opposite[k], x))) break;
     return s;
 }
 

@@ -351,6 +351,43 @@ TEST(test_tets_optimise, StarQualityInPairsMatchesTetByTet) {
     EXPECT_GT(checked, 500u);
 }
 
+// odt_target evaluates tets two at a time: the same bits as the plain loop over the tets.
+TEST(test_tets_optimise, OdtTargetInPairsMatchesThePlainLoop) {
+    const TetDomain d = sphere_domain(400, 1600, 9);
+    const Incidence inc = build_incidence(d);
+    const auto plain = [](const StarCorners& star, const std::vector<double>& weight) {
+        Vec3 sum{0, 0, 0};
+        double total = 0;
+        for (std::size_t k = 0; k < star.corners.size(); ++k) {
+            const Vec3 a = star.corners[k][0];
+            const Vec3 b = star.corners[k][1] - a, c = star.corners[k][2] - a, e = star.corners[k][3] - a;
+            const double det = dot(b, cross(c, e));
+            if (!(det > 0)) continue;
+            const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, e) + norm2(c) * cross(e, b) + norm2(e) * cross(b, c));
+            const double w = weight.empty() ? det : det * weight[k];
+            sum = sum + w * centre;
+            total += w;
+        }
+        return (1.0 / total) * sum;
+    };
+    StarCorners star;
+    std::size_t odd = 0, even = 0;
+    for (index_t p = d.front_points; p < d.point_count(); p += 5) {
+        // An inner point's star has an even count of tets; its first tets alone, an odd one.
+        const auto whole = inc.of(p);
+        gather_star_corners(d, p, p % 2 ? whole : whole.first(whole.size() - 1), star, false);
+        (star.corners.size() % 2 ? odd : even) += 1;
+        std::vector<double> weight(star.corners.size());
+        for (std::size_t k = 0; k < weight.size(); ++k) weight[k] = 1.0 + 0.1 * static_cast<double>(k % 7);
+        for (const auto& w : {std::vector<double>{}, weight}) {
+            const Vec3 got = odt_target(star, {9, 9, 9}, w), want = plain(star, w);
+            EXPECT_EQ(std::memcmp(&got, &want, sizeof(Vec3)), 0) << p;
+        }
+    }
+    EXPECT_GT(odd, 20u);
+    EXPECT_GT(even, 20u);
+}
+
 TEST(test_tets_optimise, RejectsBadOptions) {
     TetDomain d = sphere_domain(40, 20, 5);
     OptimiseOptions o;

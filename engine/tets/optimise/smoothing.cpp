@@ -8,14 +8,11 @@
 #include <span>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "engine/mesh/vec3_ops.hpp"
+#include "engine/mesh/vec3_pair.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/tets/point_colouring.hpp"
@@ -339,16 +336,36 @@ Vec3 star_centroid(const StarCorners& star) {
 Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const double> weight) {
     Vec3 sum{0, 0, 0};
     double total = 0;
-    for (std::size_t k = 0; k < star.corners.size(); ++k) {
+    // Tet k with 6V = det and circumcentre `centre`, in tet order.
+    const auto add = [&](std::size_t k, double det, const Vec3& centre) {
+        if (!(det > 0)) return;
+        const double w = weight.empty() ? det : det * weight[k];
+        sum = sum + w * centre;
+        total += w;
+    };
+    const std::size_t n = star.corners.size();
+    std::size_t k = 0;
+#if TUBEMESH_VEC3_PAIR
+    // Two tets at a time, the same operations per lane as the scalar loop below.
+    for (; k + 1 < n; k += 2) {
+        const auto& c0 = star.corners[k];
+        const auto& c1 = star.corners[k + 1];
+        const Vec3Pair a = pair_of(c0[0], c1[0]);
+        const Vec3Pair b = pair_of(c0[1], c1[1]) - a, c = pair_of(c0[2], c1[2]) - a, d = pair_of(c0[3], c1[3]) - a;
+        const __m128d det = dot(b, cross(c, d));
+        const Vec3Pair centre = a + _mm_div_pd(_mm_set1_pd(0.5), det) *
+                                        (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
+        add(k, lane(det, 0), lane(centre, 0));
+        add(k + 1, lane(det, 1), lane(centre, 1));
+    }
+#endif
+    for (; k < n; ++k) {
         const auto& corner = star.corners[k];
         const Vec3 a = corner[0];
         const Vec3 b = corner[1] - a, c = corner[2] - a, d = corner[3] - a;
         const double det = dot(b, cross(c, d));
         if (!(det > 0)) continue;
-        const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
-        const double w = weight.empty() ? det : det * weight[k];
-        sum = sum + w * centre;
-        total += w;
+        add(k, det, a + (0.5 / det) * (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c)));
     }
     return total > 0 ? (1.0 / total) * sum : fallback;
 }
@@ -363,31 +380,18 @@ double collapse_with(const StarCorners::Opposite& o, const Vec3& x) {
                              {o.area4, norm2(cross(xa, xb)), norm2(cross(xb, xc)), norm2(cross(xc, xa))});
 }
 
-#if defined(__SSE2__)
+#if TUBEMESH_VEC3_PAIR
 // collapse_with for two tets at once (a pair block of StarCorners::paired), written to q[0..1]:
 // the same operations in the same order per lane, so the same bits as collapse_with.
-void collapse_with_pair(const double* block, const Vec3& x, double q[2]) {
-    const auto at = [&](int i) { return _mm_loadu_pd(block + 2 * i); };
-    const __m128d px = _mm_set1_pd(x.x), py = _mm_set1_pd(x.y), pz = _mm_set1_pd(x.z);
-    const __m128d ax = _mm_sub_pd(at(0), px), ay = _mm_sub_pd(at(1), py), az = _mm_sub_pd(at(2), pz);
-    const __m128d bx = _mm_sub_pd(at(3), px), by = _mm_sub_pd(at(4), py), bz = _mm_sub_pd(at(5), pz);
-    const __m128d cx = _mm_sub_pd(at(6), px), cy = _mm_sub_pd(at(7), py), cz = _mm_sub_pd(at(8), pz);
-    // dot(u, v) = (u.x v.x + u.y v.y) + u.z v.z, as vec3_ops.hpp.
-    const auto dot2 = [](__m128d ux, __m128d uy, __m128d uz, __m128d vx, __m128d vy, __m128d vz) {
-        return _mm_add_pd(_mm_add_pd(_mm_mul_pd(ux, vx), _mm_mul_pd(uy, vy)), _mm_mul_pd(uz, vz));
-    };
-    // norm2(cross(u, v)), cross as vec3_ops.hpp.
-    const auto cross_norm2 = [&](__m128d ux, __m128d uy, __m128d uz, __m128d vx, __m128d vy, __m128d vz) {
-        const __m128d wx = _mm_sub_pd(_mm_mul_pd(uy, vz), _mm_mul_pd(uz, vy));
-        const __m128d wy = _mm_sub_pd(_mm_mul_pd(uz, vx), _mm_mul_pd(ux, vz));
-        const __m128d wz = _mm_sub_pd(_mm_mul_pd(ux, vy), _mm_mul_pd(uy, vx));
-        return dot2(wx, wy, wz, wx, wy, wz);
-    };
-    const __m128d three_volume = _mm_mul_pd(_mm_set1_pd(-0.5), dot2(ax, ay, az, at(9), at(10), at(11)));
-    const __m128d f0 = at(12), f1 = cross_norm2(ax, ay, az, bx, by, bz), f2 = cross_norm2(bx, by, bz, cx, cy, cz),
-                  f3 = cross_norm2(cx, cy, cz, ax, ay, az);
-    // std::max({f0..f3}) keeps r unless r < f: maxpd(f, r) is (f > r ? f : r), the same for NaNs
-    // too; std::min({..}) takes f when f < r: minpd(f, r).
+void collapse_with_pair(const double* block, const Vec3& at_x, double q[2]) {
+    const auto load = [&](int i) { return _mm_loadu_pd(block + 2 * i); };
+    const Vec3Pair x = broadcast(at_x);
+    const Vec3Pair xa = Vec3Pair{load(0), load(1), load(2)} - x, xb = Vec3Pair{load(3), load(4), load(5)} - x,
+                   xc = Vec3Pair{load(6), load(7), load(8)} - x;
+    const __m128d three_volume = _mm_mul_pd(_mm_set1_pd(-0.5), dot(xa, Vec3Pair{load(9), load(10), load(11)}));
+    const __m128d f0 = load(12), f1 = norm2(cross(xa, xb)), f2 = norm2(cross(xb, xc)), f3 = norm2(cross(xc, xa));
+    // std::max({f0..f3}) keeps r unless r < f: maxpd(f, r) is (f > r ? f : r), NaNs included;
+    // std::min({..}) takes f when f < r: minpd(f, r).
     const __m128d largest = _mm_max_pd(f3, _mm_max_pd(f2, _mm_max_pd(f1, f0)));
     const __m128d smallest = _mm_min_pd(f3, _mm_min_pd(f2, _mm_min_pd(f1, f0)));
     const __m128d negative = _mm_cmplt_pd(three_volume, _mm_setzero_pd());
@@ -413,7 +417,7 @@ StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up)
     const std::size_t n = star.corners.size();
     std::size_t k = 0;
     if (k < n && !add(collapse_with(star.opposite[k++], x))) return s;
-#if defined(__SSE2__)
+#if TUBEMESH_VEC3_PAIR
     for (std::size_t j = 0; k + 1 < n; ++j, k += 2) {
         double q[2];
         collapse_with_pair(star.paired.data() + j * StarCorners::kPairStride, x, q);

@@ -194,9 +194,16 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     c[1] = best_x.y;
     c[2] = best_x.z;
     // No other point of p's colour has a vertex in p's star: these slots are p's alone.
-    for (index_t t : incident) {
-        const index_t* v = dom.tets.vertex(t);
-        tet_collapse_now[t] = collapse_of(dom, v[0], v[1], v[2], v[3]);
+    std::size_t k = 0;
+    for (; k + 1 < incident.size(); k += 2) {
+        double q[2];
+        collapse_of_pair(dom, dom.tets.vertex(incident[k]), dom.tets.vertex(incident[k + 1]), q);
+        tet_collapse_now[incident[k]] = q[0];
+        tet_collapse_now[incident[k + 1]] = q[1];
+    }
+    if (k < incident.size()) {
+        const index_t* v = dom.tets.vertex(incident[k]);
+        tet_collapse_now[incident[k]] = collapse_of(dom, v[0], v[1], v[2], v[3]);
     }
     return true;
 }
@@ -389,18 +396,8 @@ void collapse_with_pair(const double* block, const Vec3& at_x, double q[2]) {
     const Vec3Pair xa = Vec3Pair{load(0), load(1), load(2)} - x, xb = Vec3Pair{load(3), load(4), load(5)} - x,
                    xc = Vec3Pair{load(6), load(7), load(8)} - x;
     const __m128d three_volume = _mm_mul_pd(_mm_set1_pd(-0.5), dot(xa, Vec3Pair{load(9), load(10), load(11)}));
-    const __m128d f0 = load(12), f1 = norm2(cross(xa, xb)), f2 = norm2(cross(xb, xc)), f3 = norm2(cross(xc, xa));
-    // std::max({f0..f3}) keeps r unless r < f: maxpd(f, r) is (f > r ? f : r), NaNs included;
-    // std::min({..}) takes f when f < r: minpd(f, r).
-    const __m128d largest = _mm_max_pd(f3, _mm_max_pd(f2, _mm_max_pd(f1, f0)));
-    const __m128d smallest = _mm_min_pd(f3, _mm_min_pd(f2, _mm_min_pd(f1, f0)));
-    const __m128d negative = _mm_cmplt_pd(three_volume, _mm_setzero_pd());
-    const __m128d chosen = _mm_or_pd(_mm_and_pd(negative, smallest), _mm_andnot_pd(negative, largest));
-    const __m128d area = _mm_mul_pd(_mm_set1_pd(0.5), _mm_sqrt_pd(chosen));
-    const __m128d value = _mm_div_pd(_mm_div_pd(three_volume, _mm_mul_pd(area, _mm_sqrt_pd(area))),
-                                     _mm_set1_pd(regular_tet_collapse_scale()));
-    const __m128d has_area = _mm_cmpgt_pd(area, _mm_setzero_pd());
-    _mm_storeu_pd(q, _mm_and_pd(has_area, value));  // 0 where !(area > 0)
+    _mm_storeu_pd(q, tet_collapse_from_pair(three_volume, load(12), norm2(cross(xa, xb)), norm2(cross(xb, xc)),
+                                            norm2(cross(xc, xa))));
 }
 #endif
 

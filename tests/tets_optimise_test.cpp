@@ -311,9 +311,9 @@ TEST(test_tets_optimise, IncidenceAndColouringMatchTheSerialGreedy) {
     }
 }
 
-// star_quality evaluates tets two at a time: the same bits as one tet at a time (a star of one
-// tet each), and it stops at the same tet for any give-up value.
-TEST(test_tets_optimise, StarQualityInPairsMatchesTetByTet) {
+// star_quality and ascent_direction evaluate tets two at a time: the same bits as one tet at a
+// time (a star of one tet each), and star_quality stops at the same tet for any give-up value.
+TEST(test_tets_optimise, StarQualityAndAscentInPairsMatchTetByTet) {
     const TetDomain d = sphere_domain(400, 1600, 5);
     const Incidence inc = build_incidence(d);
     std::mt19937_64 rng(3);
@@ -346,6 +346,20 @@ TEST(test_tets_optimise, StarQualityInPairsMatchesTetByTet) {
                 EXPECT_EQ(std::memcmp(&got.sum, &expected.sum, sizeof(double)), 0) << p;
                 ++checked;
             }
+        }
+        // The ascent the same way: the whole star's sum equals the tet-by-tet one (which adds to
+        // zero exactly), a tet at or below zero left out, odd and even stars alike.
+        for (std::size_t count : {star.size(), star.size() - 1}) {
+            gather_star_corners(d, p, star.first(count), whole);
+            std::vector<double> collapse(count);
+            for (std::size_t k = 0; k < count; ++k) collapse[k] = k % 5 == 3 ? 0.0 : 0.2 + 0.1 * static_cast<double>(k % 4);
+            Vec3 expected{0, 0, 0};
+            for (std::size_t k = 0; k < count; ++k) {
+                gather_star_corners(d, p, star.subspan(k, 1), single);
+                expected = expected + ascent_direction(single, std::span<const double>(collapse).subspan(k, 1));
+            }
+            const Vec3 got = ascent_direction(whole, collapse);
+            EXPECT_EQ(std::memcmp(&got, &expected, sizeof(Vec3)), 0) << p;
         }
     }
     EXPECT_GT(checked, 500u);

@@ -22,50 +22,119 @@ namespace tubemesh::tets {
 
 namespace {
 
-// The direction in which the sum of the star's collapses rises fastest when p moves (zero when
-// there is none). A tet's collapse is 3V / A^(3/2) over the regular tet's, A its largest face
-// area, so d ln q = d(3V) / 3V - 1.5 dA / A; only the faces through p have areas that move.
-// `collapse[k]`: the collapse of star[k] as it is.
+// A tet's collapse is 3V / A^(3/2) over the regular tet's, A its largest face area, so
+// d ln q = d(3V) / 3V - 1.5 dA / A; only the faces through p have areas that move.
+
+// The first of the four faces (kTetFaceToward order) with the largest area of star tet k, and
+// the face opposite p (where p is a corner of the largest face, u and w are its other two).
+struct LargestFace {
+    int face = 0, u = -1, w = -1;
+};
+LargestFace with_corners(const StarCorners& star, std::size_t k, int largest) {
+    LargestFace l{largest};
+    const int lp = star.at[k];
+    if (largest != lp)
+        for (int i : kTetFaceToward[largest])
+            if (i != lp) (l.u < 0 ? l.u : l.w) = i;
+    return l;
+}
+
+// d ln q / dp of star tet k.
+Vec3 log_collapse_gradient(const StarCorners& star, std::size_t k_star) {
+    const int lp = star.at[k_star];
+    const std::array<Vec3, 4>& c = star.corners[k_star];
+    const auto& f = kTetFaceToward[lp];
+    const Vec3& opposite = star.opposite[k_star].n;  // toward p
+    const double three_volume = 0.5 * dot(c[lp] - c[f[0]], opposite);
+    // The largest face and its area (the face opposite p's is known).
+    int largest = 0;
+    double area2 = -1;
+    for (int k = 0; k < 4; ++k) {
+        const auto& h = kTetFaceToward[k];
+        const double a2 = k == lp ? star.opposite[k_star].area4 : norm2(cross(c[h[1]] - c[h[0]], c[h[2]] - c[h[0]]));
+        if (a2 > area2) {
+            area2 = a2;
+            largest = k;
+        }
+    }
+    Vec3 d_ln = (0.5 / three_volume) * opposite;
+    if (largest != lp) {
+        // p is a corner (c[lp], u, w) of the largest face: dA/dp = (u - w) x n / 2, n the
+        // face's unit normal.
+        const LargestFace l = with_corners(star, k_star, largest);
+        const Vec3 n = cross(c[l.u] - c[lp], c[l.w] - c[lp]);
+        const double len = norm(n);
+        if (len > 0) {
+            const double area = 0.5 * len;
+            d_ln = d_ln - (1.5 / area) * (0.5 / len) * cross(c[l.u] - c[l.w], n);
+        }
+    }
+    return d_ln;
+}
+
+#if TUBEMESH_VEC3_PAIR
+// log_collapse_gradient of star tets k and k + 1, one per lane: the same operations in the same
+// order (the face opposite p is computed as the others are, which gives its stored area).
+void log_collapse_gradient_pair(const StarCorners& star, std::size_t k, Vec3 out[2]) {
+    const auto& c0 = star.corners[k];
+    const auto& c1 = star.corners[k + 1];
+    const int lp[2] = {star.at[k], star.at[k + 1]};
+    const auto corner = [&](int i0, int i1) { return pair_of(c0[i0], c1[i1]); };
+    const Vec3Pair at_p = corner(lp[0], lp[1]);
+    const Vec3Pair opposite = pair_of(star.opposite[k].n, star.opposite[k + 1].n);
+    const __m128d three_volume = _mm_mul_pd(
+        _mm_set1_pd(0.5), dot(at_p - corner(kTetFaceToward[lp[0]][0], kTetFaceToward[lp[1]][0]), opposite));
+    // The first strict maximum from -1, as the scalar loop keeps it.
+    __m128d area2 = _mm_set1_pd(-1), largest = _mm_setzero_pd();
+    for (int f = 0; f < 4; ++f) {
+        const auto& h = kTetFaceToward[f];
+        const Vec3Pair a = corner(h[0], h[0]);
+        const __m128d a2 = norm2(cross(corner(h[1], h[1]) - a, corner(h[2], h[2]) - a));
+        const __m128d larger = _mm_cmpgt_pd(a2, area2);
+        area2 = _mm_or_pd(_mm_and_pd(larger, a2), _mm_andnot_pd(larger, area2));
+        largest = _mm_or_pd(_mm_and_pd(larger, _mm_set1_pd(f)), _mm_andnot_pd(larger, largest));
+    }
+    const Vec3Pair d_ln = _mm_div_pd(_mm_set1_pd(0.5), three_volume) * opposite;
+    const LargestFace l[2] = {with_corners(star, k, static_cast<int>(lane(largest, 0))),
+                              with_corners(star, k + 1, static_cast<int>(lane(largest, 1)))};
+    const bool moves[2] = {l[0].face != lp[0], l[1].face != lp[1]};
+    out[0] = lane(d_ln, 0);
+    out[1] = lane(d_ln, 1);
+    if (!moves[0] && !moves[1]) return;
+    // A lane whose largest face is opposite p takes any corners here and ignores the result.
+    const auto other = [&](int lane_index, int i) { return moves[lane_index] ? i : (lp[lane_index] + 1) % 4; };
+    const Vec3Pair u = corner(other(0, l[0].u), other(1, l[1].u)), w = corner(other(0, l[0].w), other(1, l[1].w));
+    const Vec3Pair n = cross(u - at_p, w - at_p);
+    const __m128d len = _mm_sqrt_pd(norm2(n));
+    const __m128d area = _mm_mul_pd(_mm_set1_pd(0.5), len);
+    const Vec3Pair moved =
+        d_ln - _mm_mul_pd(_mm_div_pd(_mm_set1_pd(1.5), area), _mm_div_pd(_mm_set1_pd(0.5), len)) * cross(u - w, n);
+    for (int i = 0; i < 2; ++i)
+        if (moves[i] && lane(len, i) > 0) out[i] = lane(moved, i);
+}
+#endif
+
+}  // namespace
+
 Vec3 ascent_direction(const StarCorners& star, std::span<const double> collapse) {
     Vec3 g{0, 0, 0};
-    for (std::size_t k_star = 0; k_star < star.corners.size(); ++k_star) {
-        const int lp = star.at[k_star];
-        const std::array<Vec3, 4>& c = star.corners[k_star];
-        const double q = collapse[k_star];
-        if (!(q > 0)) continue;
-        const auto& f = kTetFaceToward[lp];
-        const Vec3& opposite = star.opposite[k_star].n;  // toward p
-        const double three_volume = 0.5 * dot(c[lp] - c[f[0]], opposite);
-        // The largest face and its area (the face opposite p's is known).
-        int largest = 0;
-        double area2 = -1;
-        for (int k = 0; k < 4; ++k) {
-            const auto& h = kTetFaceToward[k];
-            const double a2 = k == lp ? star.opposite[k_star].area4 : norm2(cross(c[h[1]] - c[h[0]], c[h[2]] - c[h[0]]));
-            if (a2 > area2) {
-                area2 = a2;
-                largest = k;
-            }
-        }
-        Vec3 d_ln = (0.5 / three_volume) * opposite;
-        if (largest != lp) {
-            // p is a corner (c[lp], u, w) of the largest face: dA/dp = (u - w) x n / 2, n the
-            // face's unit normal.
-            const auto& h = kTetFaceToward[largest];
-            int u = -1, w = -1;
-            for (int k = 0; k < 3; ++k)
-                if (h[k] != lp) (u < 0 ? u : w) = h[k];
-            const Vec3 n = cross(c[u] - c[lp], c[w] - c[lp]);
-            const double len = norm(n);
-            if (len > 0) {
-                const double area = 0.5 * len;
-                d_ln = d_ln - (1.5 / area) * (0.5 / len) * cross(c[u] - c[w], n);
-            }
-        }
-        g = g + q * d_ln;
+    const std::size_t n = star.corners.size();
+    std::size_t k = 0;
+#if TUBEMESH_VEC3_PAIR
+    for (; k + 1 < n; k += 2) {
+        if (!(collapse[k] > 0) && !(collapse[k + 1] > 0)) continue;
+        Vec3 d_ln[2];
+        log_collapse_gradient_pair(star, k, d_ln);
+        for (int i = 0; i < 2; ++i)
+            if (collapse[k + i] > 0) g = g + collapse[k + i] * d_ln[i];
     }
+#endif
+    for (; k < n; ++k)
+        if (collapse[k] > 0) g = g + collapse[k] * log_collapse_gradient(star, k);
     return g;
 }
+
+namespace {
 
 // Two kinds of move. A star whose worst tet is below `floor` first tries moves that raise that
 // tet (towards the neighbours' centroid, the ODT position or the worst tet's regular apex). A
@@ -212,10 +281,23 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
 
 bool none_inverted(const TetDomain& dom, index_t p, std::span<const index_t> star, const Vec3& x) {
     const double moved[3] = {x.x, x.y, x.z};
-    for (index_t t : star) {
+    const auto corners = [&](index_t t, const double* c[4]) {
         const index_t* v = dom.tets.vertex(t);
-        std::array<const double*, 4> c;
         for (int i = 0; i < 4; ++i) c[i] = v[i] == p ? moved : dom.point(v[i]);
+    };
+    // Two tets per filter evaluation; the signs are exact either way.
+    std::size_t k = 0;
+    for (; k + 1 < star.size(); k += 2) {
+        const double* c[2][4];
+        corners(star[k], c[0]);
+        corners(star[k + 1], c[1]);
+        int sign[2];
+        predicates::orient3d_inline_pair(c, sign);
+        if (sign[0] <= 0 || sign[1] <= 0) return false;
+    }
+    if (k < star.size()) {
+        const double* c[4];
+        corners(star[k], c);
         if (predicates::orient3d_inline(c[0], c[1], c[2], c[3]) <= 0) return false;
     }
     return true;

@@ -80,6 +80,10 @@ Vec3 star_centroid(const StarCorners& star);
 // averages them. Tets that are not positive are left out; `fallback` when none is.
 Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const double> weight = {});
 
+// The direction in which the sum of the star's collapses rises fastest when p moves (zero when
+// there is none); `collapse[k]`: the collapse of tet k as it is (tets not above 0 left out).
+Vec3 ascent_direction(const StarCorners& star, std::span<const double> collapse);
+
 // The smallest collapse and the sum of collapses of the star's tets with p placed at x.
 struct StarQuality {
     double worst = std::numeric_limits<double>::infinity();

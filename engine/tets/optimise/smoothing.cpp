@@ -13,9 +13,7 @@
 
 #include "engine/mesh/vec3_ops.hpp"
 #include "engine/mesh/vec3_pair.hpp"
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
+#include "engine/mesh/vec3_quad.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/tets/point_colouring.hpp"
@@ -386,31 +384,38 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
 
 void gather_star_corners(const TetDomain& dom, index_t p, std::span<const index_t> star, StarCorners& out,
                          bool with_faces) {
-    out.corners.resize(star.size());
-    out.at.resize(star.size());
-    for (std::size_t k = 0; k < star.size(); ++k) {
+    const std::size_t n = star.size();
+    out.corners.resize(n);
+    out.at.resize(n);
+    // Raw pointers: a store through `at` (bytes) could alias anything and force reloads.
+    std::array<Vec3, 4>* corners = out.corners.data();
+    std::uint8_t* at = out.at.data();
+    for (std::size_t k = 0; k < n; ++k) {
         const index_t* v = dom.tets.vertex(star[k]);
+        std::uint8_t where = 0;
         for (int i = 0; i < 4; ++i) {
-            out.corners[k][i] = point_vec(dom, v[i]);
-            if (v[i] == p) out.at[k] = static_cast<std::uint8_t>(i);
+            corners[k][i] = point_vec(dom, v[i]);
+            if (v[i] == p) where = static_cast<std::uint8_t>(i);
         }
+        at[k] = where;
     }
     if (!with_faces) return;
-    out.opposite.resize(star.size());
+    out.opposite.resize(n);
     // Tets 1, 2, ... also in pairs (tet 0, the old worst, is evaluated alone: most trials stop there).
-    out.paired.resize((star.size() > 1 ? (star.size() - 1) / 2 : 0) * StarCorners::kPairStride);
-    for (std::size_t k = 0; k < star.size(); ++k) {
-        const auto& f = kTetFaceToward[out.at[k]];
-        StarCorners::Opposite& o = out.opposite[k];
-        o.a = out.corners[k][f[0]];
-        o.b = out.corners[k][f[1]];
-        o.c = out.corners[k][f[2]];
+    const std::size_t pairs = n > 1 ? (n - 1) / 2 : 0;
+    out.paired.resize(pairs * StarCorners::kPairStride);
+    StarCorners::Opposite* opposite = out.opposite.data();
+    double* paired = out.paired.data();
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto& f = kTetFaceToward[at[k]];
+        StarCorners::Opposite& o = opposite[k];
+        o.a = corners[k][f[0]];
+        o.b = corners[k][f[1]];
+        o.c = corners[k][f[2]];
         o.n = cross(o.b - o.a, o.c - o.a);
         o.area4 = norm2(o.n);
-        if (k == 0) continue;
-        const std::size_t block = (k - 1) / 2 * StarCorners::kPairStride;
-        if (block >= out.paired.size()) continue;  // the last of an even count: alone
-        double* lane = out.paired.data() + block + (k - 1) % 2;
+        if (k == 0 || (k - 1) / 2 >= pairs) continue;  // tet 0, or the last of an even count: alone
+        double* lane = paired + (k - 1) / 2 * StarCorners::kPairStride + (k - 1) % 2;
         const double values[13] = {o.a.x, o.a.y, o.a.z, o.b.x, o.b.y, o.b.z, o.c.x,
                                    o.c.y, o.c.z, o.n.x, o.n.y, o.n.z, o.area4};
         for (int i = 0; i < 13; ++i) lane[2 * i] = values[i];
@@ -425,6 +430,26 @@ Vec3 star_centroid(const StarCorners& star) {
     return (1.0 / (3.0 * static_cast<double>(star.corners.size()))) * centroid;
 }
 
+#if TUBEMESH_VEC3_QUAD
+namespace {
+
+// det (6V) and circumcentre of star tets k .. k + 3 as odt_target's scalar loop computes them.
+TUBEMESH_AVX void circumcentres_quad(const StarCorners& star, std::size_t k, double det[4], Vec3 centre[4]) {
+    Vec3Quad p[4];
+    for (int i = 0; i < 4; ++i)
+        p[i] = quad_of(star.corners[k][i], star.corners[k + 1][i], star.corners[k + 2][i], star.corners[k + 3][i]);
+    const Vec3Quad a = p[0];
+    const Vec3Quad b = p[1] - a, c = p[2] - a, d = p[3] - a;
+    const __m256d det6 = dot(b, cross(c, d));
+    const Vec3Quad at = a + _mm256_div_pd(_mm256_set1_pd(0.5), det6) *
+                                (norm2(b) * cross(c, d) + norm2(c) * cross(d, b) + norm2(d) * cross(b, c));
+    _mm256_storeu_pd(det, det6);
+    for (int i = 0; i < 4; ++i) centre[i] = lane(at, i);
+}
+
+}  // namespace
+#endif
+
 Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const double> weight) {
     Vec3 sum{0, 0, 0};
     double total = 0;
@@ -437,6 +462,15 @@ Vec3 odt_target(const StarCorners& star, const Vec3& fallback, std::span<const d
     };
     const std::size_t n = star.corners.size();
     std::size_t k = 0;
+#if TUBEMESH_VEC3_QUAD
+    if (has_avx())
+        for (; k + 3 < n; k += 4) {
+            double det[4];
+            Vec3 centre[4];
+            circumcentres_quad(star, k, det, centre);
+            for (int i = 0; i < 4; ++i) add(k + i, det[i], centre[i]);
+        }
+#endif
 #if TUBEMESH_VEC3_PAIR
     // Two tets at a time, the same operations per lane as the scalar loop below.
     for (; k + 1 < n; k += 2) {
@@ -486,37 +520,17 @@ void collapse_with_pair(const double* block, const Vec3& at_x, double q[2]) {
 }
 #endif
 
-#if TUBEMESH_VEC3_PAIR && defined(__x86_64__) && defined(__GNUC__)
-#define TUBEMESH_STAR_QUADS 1
-// collapse_with_pair for two pair blocks at once (tets in lane order low 0, low 1, high 0, high 1)
-// with AVX where the processor has it: the same operations per lane (AVX has no fused
-// multiply-add), so the same bits. Plain functions: a lambda would not inherit the target.
-[[gnu::target("avx")]] inline __m256d quad_at(const double* low, const double* high, int i) {
-    return _mm256_set_m128d(_mm_loadu_pd(high + 2 * i), _mm_loadu_pd(low + 2 * i));
-}
-[[gnu::target("avx")]] inline __m256d quad_dot(__m256d ux, __m256d uy, __m256d uz, __m256d vx, __m256d vy, __m256d vz) {
-    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ux, vx), _mm256_mul_pd(uy, vy)), _mm256_mul_pd(uz, vz));
-}
-[[gnu::target("avx")]] inline __m256d quad_cross_norm2(__m256d ux, __m256d uy, __m256d uz, __m256d vx, __m256d vy,
-                                                       __m256d vz) {
-    const __m256d wx = _mm256_sub_pd(_mm256_mul_pd(uy, vz), _mm256_mul_pd(uz, vy));
-    const __m256d wy = _mm256_sub_pd(_mm256_mul_pd(uz, vx), _mm256_mul_pd(ux, vz));
-    const __m256d wz = _mm256_sub_pd(_mm256_mul_pd(ux, vy), _mm256_mul_pd(uy, vx));
-    return quad_dot(wx, wy, wz, wx, wy, wz);
-}
-[[gnu::target("avx")]] void collapse_with_quad(const double* low, const double* high, const Vec3& at_x, double q[4]) {
-    const __m256d px = _mm256_set1_pd(at_x.x), py = _mm256_set1_pd(at_x.y), pz = _mm256_set1_pd(at_x.z);
-    const __m256d ax = _mm256_sub_pd(quad_at(low, high, 0), px), ay = _mm256_sub_pd(quad_at(low, high, 1), py),
-                  az = _mm256_sub_pd(quad_at(low, high, 2), pz);
-    const __m256d bx = _mm256_sub_pd(quad_at(low, high, 3), px), by = _mm256_sub_pd(quad_at(low, high, 4), py),
-                  bz = _mm256_sub_pd(quad_at(low, high, 5), pz);
-    const __m256d cx = _mm256_sub_pd(quad_at(low, high, 6), px), cy = _mm256_sub_pd(quad_at(low, high, 7), py),
-                  cz = _mm256_sub_pd(quad_at(low, high, 8), pz);
-    const __m256d three_volume =
-        _mm256_mul_pd(_mm256_set1_pd(-0.5), quad_dot(ax, ay, az, quad_at(low, high, 9), quad_at(low, high, 10),
-                                                     quad_at(low, high, 11)));
-    const __m256d f0 = quad_at(low, high, 12), f1 = quad_cross_norm2(ax, ay, az, bx, by, bz),
-                  f2 = quad_cross_norm2(bx, by, bz, cx, cy, cz), f3 = quad_cross_norm2(cx, cy, cz, ax, ay, az);
+#if TUBEMESH_VEC3_QUAD
+// collapse_with_pair for two pair blocks at once (tets in lane order low 0, low 1, high 0,
+// high 1): the same operations per lane, so the same bits.
+TUBEMESH_AVX void collapse_with_quad(const double* low, const double* high, const Vec3& at_x, double q[4]) {
+    __m256d v[13];  // the 13 numbers of the four faces, lane by lane (no lambda: it would lose the target)
+    for (int i = 0; i < 13; ++i) v[i] = _mm256_set_m128d(_mm_loadu_pd(high + 2 * i), _mm_loadu_pd(low + 2 * i));
+    const Vec3Quad x = quad_of(at_x, at_x, at_x, at_x);
+    const Vec3Quad xa = Vec3Quad{v[0], v[1], v[2]} - x, xb = Vec3Quad{v[3], v[4], v[5]} - x,
+                   xc = Vec3Quad{v[6], v[7], v[8]} - x;
+    const __m256d three_volume = _mm256_mul_pd(_mm256_set1_pd(-0.5), dot(xa, Vec3Quad{v[9], v[10], v[11]}));
+    const __m256d f0 = v[12], f1 = norm2(cross(xa, xb)), f2 = norm2(cross(xb, xc)), f3 = norm2(cross(xc, xa));
     // As tet_collapse_from_pair: maxpd(f, r) and minpd(f, r) are std::max's and std::min's picks.
     const __m256d largest = _mm256_max_pd(f3, _mm256_max_pd(f2, _mm256_max_pd(f1, f0)));
     const __m256d smallest = _mm256_min_pd(f3, _mm256_min_pd(f2, _mm256_min_pd(f1, f0)));
@@ -527,8 +541,7 @@ void collapse_with_pair(const double* block, const Vec3& at_x, double q[2]) {
                                         _mm256_set1_pd(regular_tet_collapse_scale()));
     _mm256_storeu_pd(q, _mm256_and_pd(_mm256_cmp_pd(area, zero, _CMP_GT_OQ), value));  // 0 where !(area > 0)
 }
-#else
-#define TUBEMESH_STAR_QUADS 0
+
 #endif
 
 }  // namespace
@@ -546,9 +559,8 @@ StarQuality star_quality(const StarCorners& star, const Vec3& x, double give_up)
     if (k < n && !add(collapse_with(star.opposite[k++], x))) return s;
 #if TUBEMESH_VEC3_PAIR
     std::size_t j = 0;
-#if TUBEMESH_STAR_QUADS
-    static const bool avx = __builtin_cpu_supports("avx");
-    if (avx)
+#if TUBEMESH_VEC3_QUAD
+    if (has_avx())
         for (; k + 3 < n; j += 2, k += 4) {
             double q[4];
             collapse_with_quad(star.paired.data() + j * StarCorners::kPairStride,

@@ -35,8 +35,8 @@ void check_formats(const nlohmann::json& v, const std::string& where) {
 // Types here; ranges by run::mesh_options once the block's options are complete.
 void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
     if (key == "formats") return check_formats(v, where);
-    if (key == "move_apexes") {
-        if (!v.is_boolean()) throw Error(fmt::format("{}: \"move_apexes\" must be true or false, got {}", where, v.dump()));
+    if (key == "move_apexes" || key == "slide_surface") {
+        if (!v.is_boolean()) throw Error(fmt::format("{}: \"{}\" must be true or false, got {}", where, key, v.dump()));
         return;
     }
     for (const Key& k : kNumbers) {
@@ -71,6 +71,7 @@ run::MeshSettings settings_of(const nlohmann::json& o) {
     s.axial_aspect = o.at("axial_aspect").get<double>();
     s.chordal = o.at("chordal").get<double>();
     s.move_apexes = o.at("move_apexes").get<bool>();
+    s.slide_surface = o.at("slide_surface").get<bool>();
     s.pyramid_height = o.at("pyramid_height").get<double>();
     s.gradation = o.at("gradation").get<double>();
     s.tet_parts = o.at("tet_parts").get<int>();
@@ -95,6 +96,7 @@ nlohmann::json default_block_options() {
             {"tet_parts", d.tet_parts},
             {"tet_relax", d.tet_relax},
             {"move_apexes", d.move_apexes},
+            {"slide_surface", d.slide_surface},
             {"max_elements", nullptr},
             {"solid", nullptr},
             {"formats", {"msh"}},

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/check/mesh_check.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/pipeline/pipeline.hpp"
 #include "engine/quality/quality.hpp"
 #include "geom/builders/block_builder.hpp"
@@ -213,20 +214,29 @@ TEST(Pipeline, TetPhaseReportsWhereItsTimeWent) {
     EXPECT_LE(count("rescue points"), count("new nodes"));
 }
 
+// A preset meshed with `plain` options on 2 threads, and with `change` made to them on 1 and 2
+// threads (expected to give the same mesh): {plain, changed}.
+template <class Change>
+std::pair<PipelineResult, PipelineResult> with_and_without(const std::string& preset, MeshOptions plain,
+                                                           Change change) {
+    const Prepared p = prepare(preset);
+    plain.threads = 2;
+    MeshOptions one = plain, two = plain;
+    change(one);
+    change(two);
+    one.threads = 1;
+    PipelineResult a = run_pipeline(p.prepared.pipeline_input(), plain);
+    PipelineResult b = run_pipeline(p.prepared.pipeline_input(), one);
+    const PipelineResult c = run_pipeline(p.prepared.pipeline_input(), two);
+    EXPECT_TRUE(b.mesh == c.mesh) << "changed options: 1 and 2 threads differ";
+    return {std::move(a), std::move(b)};
+}
+
 // Apexes moved by the optimisation: the tets between pyramids are no longer fixed, so the
 // tets' minimum rises; every pyramid stays at 0.5 or better (or where it was, if below), the
 // hexes and the pyramids' bases do not move, and the mesh is the same for 1 and 2 threads.
 TEST(Pipeline, MovedApexesLiftTheTetsAndKeepThePyramidsAtTheFloor) {
-    const Prepared p = prepare("paper-ex2");
-    MeshOptions fixed, one, two;
-    fixed.threads = 2;
-    one.threads = 1;
-    two.threads = 2;
-    one.tets.move_apexes = two.tets.move_apexes = true;
-    const PipelineResult a = run_pipeline(p.prepared.pipeline_input(), fixed);
-    const PipelineResult b = run_pipeline(p.prepared.pipeline_input(), one);
-    const PipelineResult c = run_pipeline(p.prepared.pipeline_input(), two);
-    EXPECT_TRUE(b.mesh == c.mesh);
+    const auto [a, b] = with_and_without("paper-ex2", {}, [](MeshOptions& o) { o.tets.move_apexes = true; });
     ASSERT_TRUE(check_mesh(b.mesh).ok()) << describe(check_mesh(b.mesh));
     EXPECT_EQ(a.mesh.block(CellKind::Pyramid).nodes, b.mesh.block(CellKind::Pyramid).nodes);
     EXPECT_EQ(a.mesh.block(CellKind::Hex).nodes, b.mesh.block(CellKind::Hex).nodes);
@@ -251,6 +261,54 @@ TEST(Pipeline, MovedApexesLiftTheTetsAndKeepThePyramidsAtTheFloor) {
                 pyramids.size() / 5, a.quality.tet_collapse.min, b.quality.tet_collapse.min,
                 a.quality.tet_collapse.mean, b.quality.tet_collapse.mean, a.quality.pyramid_jacobian.min,
                 b.quality.pyramid_jacobian.min);
+}
+
+// Surface nodes slid by the optimisation stay in their flat face: every surface group keeps
+// its area and the solid its volume, nodes of CAD edges (two groups), rings and pyramids stay,
+// the tets' minimum and mean rise, and the mesh is the same for 1 and 2 threads.
+TEST(Pipeline, SlidSurfaceNodesStayInTheirFlatFaces) {
+    MeshOptions fixed;
+    fixed.tets.slide_surface = false;
+    const auto [a, b] = with_and_without("paper-ex1", fixed, [](MeshOptions& o) { o.tets.slide_surface = true; });
+    const CheckReport ca = check_mesh(a.mesh), cb = check_mesh(b.mesh);
+    ASSERT_TRUE(cb.ok()) << describe(cb);
+    EXPECT_NEAR(cb.volume, ca.volume, 1e-9 * ca.volume);
+    EXPECT_NEAR(cb.boundary_area, ca.boundary_area, 1e-9 * ca.boundary_area);
+    const auto same = [&](index_t v) { return a.mesh.x[v] == b.mesh.x[v] && a.mesh.y[v] == b.mesh.y[v] && a.mesh.z[v] == b.mesh.z[v]; };
+    for (CellKind k : {CellKind::Hex, CellKind::Pyramid})
+        for (index_t v : b.mesh.block(k).nodes) ASSERT_TRUE(same(v)) << "a ring or pyramid node moved";
+    // Per surface group: its area, and which nodes lie on two groups' triangles.
+    const FaceBlock& tris = b.mesh.block(FaceKind::Tri);
+    ASSERT_EQ(tris.nodes, a.mesh.block(FaceKind::Tri).nodes);
+    std::vector<double> area_a(b.mesh.surface_group_names.size(), 0.0), area_b = area_a;
+    std::vector<index_t> group(b.mesh.point_count(), kNoIndex);
+    std::vector<char> edge(b.mesh.point_count(), 0);
+    for (std::size_t t = 0; t < tris.group.size(); ++t) {
+        const index_t* n = &tris.nodes[3 * t];
+        for (const HybridMesh* m : {&a.mesh, &b.mesh}) {
+            const Vec3 e = cross(m->point(n[1]) - m->point(n[0]), m->point(n[2]) - m->point(n[0]));
+            (m == &a.mesh ? area_a : area_b)[tris.group[t]] += 0.5 * norm(e);
+        }
+        for (int k = 0; k < 3; ++k) {
+            if (group[n[k]] != kNoIndex && group[n[k]] != tris.group[t]) edge[n[k]] = 1;
+            group[n[k]] = tris.group[t];
+        }
+    }
+    for (std::size_t g = 0; g < area_a.size(); ++g)
+        EXPECT_NEAR(area_b[g], area_a[g], 1e-9 * area_a[g]) << b.mesh.surface_group_names[g];
+    std::size_t moved = 0, surface = 0;
+    for (index_t v = 0; v < static_cast<index_t>(group.size()); ++v) {
+        if (group[v] == kNoIndex) continue;
+        ++surface;
+        if (edge[v]) EXPECT_TRUE(same(v)) << "a node on a CAD edge moved";
+        moved += !same(v);
+    }
+    EXPECT_GT(moved, surface / 4) << "most nodes inside the block's flat faces should find a better place";
+    EXPECT_GT(b.quality.tet_collapse.min, a.quality.tet_collapse.min);
+    EXPECT_GT(b.quality.tet_collapse.mean, a.quality.tet_collapse.mean);
+    std::printf("slid surface nodes: %zu of %zu; tet min %.4f -> %.4f, mean %.4f -> %.4f\n", moved, surface,
+                a.quality.tet_collapse.min, b.quality.tet_collapse.min, a.quality.tet_collapse.mean,
+                b.quality.tet_collapse.mean);
 }
 
 // The run's parallelism is resolved once, with one meaning of 0 for each value.

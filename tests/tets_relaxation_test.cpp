@@ -72,7 +72,8 @@ TEST(OdtTarget, CentreOfASymmetricStarAndPulledByDensity) {
 }
 
 struct Refined {
-    TetDomain recovered, domain;
+    RecoveredTets recovered;
+    TetDomain domain;
     std::vector<double> sizes;
 };
 
@@ -81,7 +82,7 @@ struct Refined {
 Refined refined_cube() {
     Refined r;
     r.domain = recovered_cube_with_hole(9);
-    r.recovered = copy_of(r.domain);
+    r.recovered = recovered_tets(r.domain);
     ControlSpaceOptions co;
     co.gradation = 1.6;
     const ControlSpace space(r.domain, co);
@@ -103,7 +104,7 @@ double mean_collapse(const TetDomain& d) {
 TEST(Relaxation, KeepsTheDomainAndRaisesTheMean) {
     Refined r = refined_cube();
     ASSERT_EQ(r.sizes.size(), r.domain.point_count());
-    const index_t fixed = r.recovered.point_count();
+    const index_t fixed = r.recovered.points;
     ASSERT_GT(r.domain.point_count(), fixed + 400) << "the fixture should have hundreds of interior points";
     ASSERT_GT(fixed, r.domain.front_points) << "the fixture should have Steiner points, which must not move";
     const std::vector<double> fixed_xyz(r.domain.xyz.begin(), r.domain.xyz.begin() + 3 * std::size_t{fixed});

@@ -17,14 +17,14 @@ using namespace detail;
 // ---------------------------------------------------------------------------------------
 // Constrained mode: taking over a mesh, and cavities made star-shaped.
 
-void Triangulation::adopt(std::span<const double> xyz, TetStore&& tets) {
+void Triangulation::adopt(std::vector<double>&& xyz, TetStore&& tets) {
     if (started()) throw Error("Delaunay: adopt() on a triangulation that already has tets");
     if (xyz.size() % 3 != 0) throw Error("Delaunay: adopt() needs 3 coordinates per point");
     if (tets.size() == 0) throw Error("Delaunay: adopt() needs a mesh with at least one tetrahedron");
     const auto n = static_cast<index_t>(xyz.size() / 3);
     if (n >= kInfiniteVertex) throw Error("Delaunay: too many points for 32-bit ids");
     constrained_ = true;
-    xyz_.assign(xyz.begin(), xyz.end());
+    xyz_ = std::move(xyz);
     global_.resize(n);
     for (index_t v = 0; v < n; ++v) global_[v] = v;
     local_.assign(n, kNoIndex);

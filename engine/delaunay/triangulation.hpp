@@ -89,6 +89,8 @@ public:
                        std::span<const index_t> ids);
     index_t point_count() const { return static_cast<index_t>(global_.size()); }
     const double* point(index_t v) const { return xyz_.data() + std::size_t{3} * v; }
+    // All points, 3 coordinates each, by kernel id (valid until points are added).
+    std::span<const double> points() const { return xyz_; }
     index_t global_id(index_t v) const { return global_[v]; }
 
     void reserve_points(std::size_t n);
@@ -101,7 +103,8 @@ public:
     // Constrained mode: takes over the points (kernel id = global id = position in `xyz`) and
     // the tets of a finished mesh (positive tets, no free slots, kNoAdjacent on the boundary).
     // Instead of start(); points added later get the ids the caller gives them.
-    void adopt(std::span<const double> xyz, TetStore&& tets);
+    void adopt(std::vector<double>&& xyz, TetStore&& tets);
+    void adopt(std::span<const double> xyz, TetStore&& tets) { adopt(std::vector<double>(xyz.begin(), xyz.end()), std::move(tets)); }
     bool constrained() const { return constrained_; }
     // Constrained mode: a live tet near point v, where a serial walk to v starts again when the
     // walk from the previous insertion runs into the front (non-convex regions).
@@ -124,6 +127,9 @@ public:
     // Removes ghost and free slots (hull faces get kNoAdjacent), maps vertices and
     // duplicates() to global ids and hands over the store. No insert() afterwards.
     TetStore finish();
+    // Hands over the points (by kernel id), after finish(): the tet step keeps one point array
+    // that goes from phase to phase instead of copies.
+    std::vector<double> take_points() { return std::move(xyz_); }
 
     // The live store: ghost tets (one vertex kInfiniteVertex) and free slots (vertex[0] ==
     // kFreeSlot) included.

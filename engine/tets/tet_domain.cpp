@@ -5,18 +5,7 @@
 
 namespace tubemesh::tets {
 
-TetDomain copy_of(const TetDomain& d) {
-    TetDomain c;
-    c.xyz = d.xyz;
-    c.front_points = d.front_points;
-    c.tets = d.tets.clone();
-    c.front = d.front;
-    c.apex_rank = d.apex_rank;
-    c.apex_at = d.apex_at;
-    c.apex_bases = d.apex_bases;
-    c.apex_floor = d.apex_floor;
-    return c;
-}
+RecoveredTets recovered_tets(const TetDomain& d) { return {d.tets.clone(), d.point_count()}; }
 
 std::vector<index_t> drop_unused_points(TetDomain& d, index_t first) {
     const index_t n = d.point_count();

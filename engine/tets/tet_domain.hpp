@@ -23,6 +23,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/delaunay/tet_store.hpp"
+#include "engine/mesh/vec3.hpp"
 
 namespace tubemesh::tets {
 
@@ -39,16 +40,33 @@ struct TetDomain {
     std::vector<index_t> apex_rank, apex_at;
     std::vector<std::array<index_t, 4>> apex_bases;
     double apex_floor = 0.5;
+    // Front points that may slide in the plane of their flat face (tet_step.hpp, slide_surface):
+    // slide_rank[p] (p below front_points) is kNoIndex for a point that stays, else k: its moves
+    // keep it in the plane dot(n, x) = slide_offset[k] with unit normal n = slide_normal[k].
+    // Empty: none slides.
+    std::vector<index_t> slide_rank;
+    std::vector<Vec3> slide_normal;
+    std::vector<double> slide_offset;
 
+    bool is_apex(index_t p) const { return p < front_points && !apex_rank.empty() && apex_rank[p] != kNoIndex; }
+    bool slides(index_t p) const { return p < front_points && !slide_rank.empty() && slide_rank[p] != kNoIndex; }
     // True for a point the smoothing may move.
-    bool movable(index_t p) const { return p >= front_points || (!apex_rank.empty() && apex_rank[p] != kNoIndex); }
+    bool movable(index_t p) const { return p >= front_points || is_apex(p) || slides(p); }
+    // True when some front point may move.
+    bool front_moves() const { return !apex_rank.empty() || !slide_rank.empty(); }
 
     index_t point_count() const { return static_cast<index_t>(xyz.size() / 3); }
     const double* point(index_t p) const { return xyz.data() + std::size_t{3} * p; }
 };
 
-// A copy (TetStore has no copy constructor, so that a large copy is always asked for by name).
-TetDomain copy_of(const TetDomain& d);
+// The tets boundary recovery left, kept for the relaxation to insert points into again: over
+// the domain's first `points` points, which nothing later moves or renumbers, so only the tets
+// are copied (TetStore has no copy constructor: a large copy is always asked for by name).
+struct RecoveredTets {
+    delaunay::TetStore tets;
+    index_t points = 0;
+};
+RecoveredTets recovered_tets(const TetDomain& d);
 
 // Removes the points from `first` on that no tet uses (the ones a kernel run skipped) and moves
 // the later ones down, in order; points before `first` keep their ids. Returns the old -> new

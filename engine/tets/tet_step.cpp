@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/core/timing.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 
 namespace tubemesh::tets {
 namespace {
@@ -46,6 +47,70 @@ void mark_movable_apexes(const HybridMesh& mesh, const std::vector<index_t>& to_
     if (!dom.apex_bases.empty()) dom.apex_at.push_back(static_cast<index_t>(dom.apex_bases.size()));
 }
 
+// Surface nodes inside one flat face: every front triangle around them is a boundary triangle
+// of one surface group, and their fan lies in one plane. Nodes of cells, of CAD edges (two
+// groups meet) and of curved faces stay.
+void mark_sliding_points(const HybridMesh& mesh, std::span<const index_t> front, const std::vector<index_t>& to_domain,
+                         const std::vector<index_t>& to_mesh, TetDomain& dom) {
+    const index_t n = mesh.point_count();
+    constexpr index_t kMixed = kNoIndex - 1;
+    std::vector<index_t> group(n, kNoIndex);  // the one surface group around a node, or kMixed
+    std::vector<index_t> surface_count(n, 0), front_count(n, 0);
+    for (CellKind kind : {CellKind::Hex, CellKind::Pyramid})
+        for (index_t v : mesh.block(kind).nodes) group[v] = kMixed;
+    for (index_t v : mesh.block(FaceKind::Quad).nodes) group[v] = kMixed;
+    const FaceBlock& tris = mesh.block(FaceKind::Tri);
+    for (std::size_t t = 0; t < tris.group.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const index_t v = tris.nodes[3 * t + k];
+            if (group[v] == kNoIndex) group[v] = tris.group[t];
+            else if (group[v] != tris.group[t]) group[v] = kMixed;
+            ++surface_count[v];
+        }
+    // Each front point's triangles, as (domain point, front triangle) sorted by point.
+    std::vector<std::pair<index_t, index_t>> fans;
+    fans.reserve(front.size());
+    for (std::size_t t = 0; t < front.size() / 3; ++t)
+        for (int k = 0; k < 3; ++k) {
+            ++front_count[front[3 * t + k]];
+            fans.push_back({to_domain[front[3 * t + k]], static_cast<index_t>(t)});
+        }
+    std::sort(fans.begin(), fans.end());
+    dom.slide_rank.assign(dom.front_points, kNoIndex);
+    dom.slide_normal.clear();
+    dom.slide_offset.clear();
+    const auto at = [&](index_t v) { return mesh.point(v); };
+    for (std::size_t i = 0, j = 0; i < fans.size(); i = j) {
+        const index_t p = fans[i].first;
+        while (j < fans.size() && fans[j].first == p) ++j;
+        const index_t node = to_mesh[p];
+        // All the node's front triangles are its boundary triangles, of one group.
+        if (group[node] == kNoIndex || group[node] == kMixed || surface_count[node] != front_count[node]) continue;
+        const Vec3 here = at(node);
+        Vec3 sum{0, 0, 0};
+        double longest = 0;
+        for (std::size_t k = i; k < j; ++k) {
+            const index_t* f = front.data() + 3 * std::size_t{fans[k].second};
+            sum = sum + cross(at(f[1]) - at(f[0]), at(f[2]) - at(f[0]));
+            for (int c = 0; c < 3; ++c) longest = std::max(longest, norm(at(f[c]) - here));
+        }
+        const double len = norm(sum);
+        if (!(len > 0)) continue;
+        const Vec3 normal = (1.0 / len) * sum;
+        // Flat: no fan corner off the plane by more than a rounding error of the edges.
+        bool flat = true;
+        for (std::size_t k = i; k < j && flat; ++k)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(dot(at(front[3 * std::size_t{fans[k].second} + c]) - here, normal)) > 1e-9 * longest)
+                    flat = false;
+        if (!flat) continue;
+        dom.slide_rank[p] = static_cast<index_t>(dom.slide_normal.size());
+        dom.slide_normal.push_back(normal);
+        dom.slide_offset.push_back(dot(normal, here));
+    }
+    if (dom.slide_normal.empty()) dom.slide_rank.clear();
+}
+
 }  // namespace
 
 TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_t region, const Parallelism& par,
@@ -76,9 +141,10 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
 
     TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery);
     if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
+    if (options.slide_surface) mark_sliding_points(mesh, front, to_domain, to_mesh, domain);
     // The relaxation inserts the interior points again into this mesh.
-    TetDomain recovered;
-    if (options.relaxation.iterations > 0) recovered = copy_of(domain);
+    RecoveredTets recovered;
+    if (options.relaxation.iterations > 0) recovered = recovered_tets(domain);
     if (options.part_done) options.part_done();
 
     ControlSpaceOptions co;
@@ -91,16 +157,16 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr);
     if (options.relaxation.iterations > 0) {
         stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation);
-        recovered = TetDomain();
+        recovered = RecoveredTets();
     }
     if (options.part_done) options.part_done();  // refinement and relaxation
 
     stats.optimise = optimise(domain, options.optimise);
     if (options.part_done) options.part_done();
 
-    // Apexes the smoothing moved: their new places.
-    for (index_t p = 0; p < domain.front_points && !domain.apex_rank.empty(); ++p)
-        if (domain.apex_rank[p] != kNoIndex) {
+    // Apexes and surface points the smoothing moved: their new places.
+    for (index_t p = 0; p < domain.front_points && domain.front_moves(); ++p)
+        if (domain.movable(p)) {
             const double* q = domain.point(p);
             mesh.x[to_mesh[p]] = q[0];
             mesh.y[to_mesh[p]] = q[1];

@@ -245,6 +245,8 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
         {with([](json& m) { m["blocks"][0]["options"] = {{"layers", nullptr}}; }), "\"layers\" must be a number, got null"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"chordal", 0}}; }), "chordal must be between"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"move_apexes", 1}}; }), "\"move_apexes\" must be true or false"},
+        {with([](json& m) { m["blocks"][0]["options"] = {{"slide_surface", "yes"}}; }),
+         "\"slide_surface\" must be true or false"},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
         {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},
         {with([](json& m) { m["name"] = {{"size", 1}}; }), "\"name\" must be a string"},

@@ -140,6 +140,19 @@ def test_moved_apexes_keep_the_rings_and_the_pyramid_bases():
         0.5, fixed.report["quality"]["pyramid_scaled_jacobian"]["min"]) - 1e-12
 
 
+def test_slid_surface_nodes_keep_the_solid_and_its_rings():
+    fixed = tubemesh.mesh("paper-ex3", threads=1, slide_surface=False)
+    slid = tubemesh.mesh("paper-ex3", threads=1)
+    assert np.array_equal(fixed.hexes, slid.hexes) and np.array_equal(fixed.pyramids, slid.pyramids)
+    held = np.unique(np.concatenate([fixed.hexes.ravel(), fixed.pyramids.ravel()]))
+    assert np.array_equal(fixed.nodes[held], slid.nodes[held])
+    surface = np.unique(fixed.triangles)
+    assert np.any(fixed.nodes[surface] != slid.nodes[surface])
+    volume = lambda r: r.report["check"]["volume"]
+    assert abs(volume(slid) - volume(fixed)) <= 1e-9 * volume(fixed)
+    assert slid.report["quality"]["tet_collapse"]["mean"] > fixed.report["quality"]["tet_collapse"]["mean"]
+
+
 def test_economy_is_coarser_and_given_options_win():
     economy = tubemesh.mesh("paper-ex3", economy=True, threads=1)
     default = tubemesh.mesh("paper-ex3", threads=1)

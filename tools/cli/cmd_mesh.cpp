@@ -176,6 +176,11 @@ Command add_mesh_command(CLI::App& app) {
                   "Let the tet optimisation move the pyramid apexes, each pyramid kept at a scaled Jacobian of at "
                   "least 0.5: the tets' minimum and mean rise, the pyramids' fall (default: apexes stay where the "
                   "pyramid layer put them)");
+    cmd->add_flag_callback(
+        "--fixed-surface", [args] { args->settings.slide_surface = false; },
+        "Keep every surface node where the surface mesher put it (default: the tet optimisation slides the nodes "
+        "inside flat faces of the solid in their plane, which raises the tets' minimum and mean; nodes on CAD "
+        "edges, curved faces, rings and pyramids stay, the shape and the surface groups do not change)");
     args->max_elements_option =
         cmd->add_option("--max-elements", args->max_elements,
                         "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "

@@ -65,6 +65,7 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     o.tet_parts = static_cast<unsigned>(s.tet_parts);
     o.tets.relaxation.iterations = s.tet_relax;
     o.tets.move_apexes = s.move_apexes;
+    o.tets.slide_surface = s.slide_surface;
     o.threads = s.threads.value_or(0);
     o.max_elements = s.max_elements.value_or(0);
     return o;

@@ -27,6 +27,7 @@ struct MeshSettings {
     int tet_parts = static_cast<int>(default_mesh_options().tet_parts);
     int tet_relax = default_mesh_options().tets.relaxation.iterations;
     bool move_apexes = default_mesh_options().tets.move_apexes;
+    bool slide_surface = default_mesh_options().tets.slide_surface;
     std::optional<double> max_elements;     // automatic: what this machine's memory holds
     std::optional<int> solid;               // which solid of the file, 1-based; automatic: the only one
     Stage until = kLastStage;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -20,16 +21,49 @@ using delaunay::kFreeSlot;
 
 namespace {
 
+// A plan as a candidate keeps it between rounds: its kind, old tets and new tets in one block of
+// exactly their size. A FlipPlan has room for the largest move (340 bytes) where a 2-3 flip
+// needs 14 ids, and a sweep's first round holds a plan for most of its bad tets at once.
+class StoredPlan {
+public:
+    void store(const FlipPlan& p) {
+        const std::size_t n = static_cast<std::size_t>(p.old_count) + 4 * static_cast<std::size_t>(p.new_count);
+        if (n > capacity_) {
+            ids_ = std::make_unique_for_overwrite<index_t[]>(n);
+            capacity_ = static_cast<std::uint8_t>(n);
+        }
+        kind_ = p.kind;
+        old_count_ = static_cast<std::uint8_t>(p.old_count);
+        new_count_ = static_cast<std::uint8_t>(p.new_count);
+        std::copy_n(p.old_tets.begin(), p.old_count, ids_.get());
+        for (int j = 0; j < p.new_count; ++j) std::copy_n(p.new_tets[j].begin(), 4, ids_.get() + p.old_count + 4 * j);
+    }
+    // The plan as apply_flip takes it (its collapse figures are not kept).
+    FlipPlan load() const {
+        FlipPlan p;
+        p.kind = kind_;
+        p.old_count = old_count_;
+        p.new_count = new_count_;
+        std::copy_n(ids_.get(), old_count_, p.old_tets.begin());
+        for (int j = 0; j < new_count_; ++j) std::copy_n(ids_.get() + old_count_ + 4 * j, 4, p.new_tets[j].begin());
+        return p;
+    }
+    std::span<const index_t> old_tets() const { return {ids_.get(), old_count_}; }
+
+private:
+    std::unique_ptr<index_t[]> ids_;
+    FlipKind kind_ = FlipKind::Flip23;
+    std::uint8_t old_count_ = 0, new_count_ = 0, capacity_ = 0;
+};
+static_assert(FlipPlan::kMaxOld + 4 * FlipPlan::kMaxNew < 256, "StoredPlan counts ids in a byte");
+
 struct Candidate {
     index_t tet;
     std::array<index_t, 4> vertices;  // to tell whether the slot still holds this tet
     double collapse;
     std::uint32_t planned = 0;  // round whose start the plan describes (0: never)
     bool has_plan = false;
-    // Allocated when a plan is first found: a sweep lists every bad tet near a change, many
-    // never get a plan, and a FlipPlan held in each (340 bytes, zeroed) made building the list
-    // cost a fifth of the planning (serpentine lift: 368k candidates over the sweeps, 0.29 s).
-    std::unique_ptr<FlipPlan> plan;
+    StoredPlan plan;              // allocated when a plan is first found: most candidates get none
     std::vector<index_t> claims;  // the tets applying the plan writes: its old tets and their neighbours
 };
 
@@ -121,10 +155,9 @@ bool still_there(const TetDomain& dom, const Candidate& c) {
 
 // The old tets and the tets around them whose neighbour codes applying the plan rewrites, as
 // they are now: a flip next to a waiting plan changes its neighbours but not the plan.
-void plan_claims(const TetDomain& dom, const FlipPlan& plan, std::vector<index_t>& claims) {
+void plan_claims(const TetDomain& dom, std::span<const index_t> old_tets, std::vector<index_t>& claims) {
     claims.clear();
-    for (int i = 0; i < plan.old_count; ++i) {
-        const index_t t = plan.old_tets[i];
+    for (const index_t t : old_tets) {
         claims.push_back(t);
         for (index_t f = 0; f < 4; ++f) {
             const index_t n = dom.tets.neighbour(4 * t + f);
@@ -170,6 +203,14 @@ std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const st
     return out;
 }
 
+// resize() for per-slot arrays that grow a little every round: an eighth more room at a time
+// instead of std::vector's doubling, whose unused half would set the step's memory peak.
+template <class T>
+void grow(std::vector<T>& v, std::size_t n, T value) {
+    if (n > v.capacity()) v.reserve(std::max(n, v.capacity() + v.capacity() / 8));
+    v.resize(n, value);
+}
+
 }  // namespace
 
 FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
@@ -204,7 +245,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
     while (!pending.empty()) {
         ++counts.rounds;
         const auto stamp = static_cast<std::uint32_t>(counts.rounds);
-        written.resize(dom.tets.size(), 0);
+        grow(written, dom.tets.size(), std::uint32_t{0});
         alive.assign(pending.size(), 0);
         // A plan stays valid while no flip rewrote one of its old tets: it depends on their
         // vertex rows and collapses alone (points do not move in a sweep, and applying reads
@@ -217,10 +258,10 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
             Candidate& c = cands[pending[i]];
             const bool valid =
                 c.planned != 0 && c.has_plan &&
-                std::none_of(c.plan->old_tets.begin(), c.plan->old_tets.begin() + c.plan->old_count,
+                std::none_of(c.plan.old_tets().begin(), c.plan.old_tets().end(),
                              [&](index_t t) { return written[t] >= c.planned; });
             if (valid) {
-                plan_claims(dom, *c.plan, c.claims);  // its neighbours may be new tets
+                plan_claims(dom, c.plan.old_tets(), c.claims);  // its neighbours may be new tets
             } else {
                 if (!still_there(dom, c)) return;
                 c.planned = stamp;
@@ -233,9 +274,8 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                                                    found);
                 // Only a candidate with a plan stays pending.
                 if (c.has_plan) {
-                    if (!c.plan) c.plan = std::make_unique<FlipPlan>();
-                    *c.plan = found;
-                    plan_claims(dom, *c.plan, c.claims);
+                    c.plan.store(found);
+                    plan_claims(dom, c.plan.old_tets(), c.claims);
                 }
             }
             alive[i] = c.has_plan;
@@ -243,7 +283,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
 
         // Worst first; a candidate whose claims meet a taken one's waits for the next round
         // (two flips that share no claimed tet write disjoint slots and neighbour codes).
-        claimed.resize(dom.tets.size(), 0);
+        grow(claimed, dom.tets.size(), std::uint32_t{0});
         taken.clear();
         waiting.clear();
         for (std::size_t i = 0; i < pending.size(); ++i) {
@@ -262,12 +302,12 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         dom.tets.reserve(base + spare_total);
         dom.tets.set_size(base + static_cast<index_t>(spare_total));
         for (index_t s = base; s < dom.tets.size(); ++s) std::fill_n(dom.tets.vertex(s), 4, kFreeSlot);
-        q.resize(dom.tets.size(), std::numeric_limits<double>::infinity());
+        grow(q, dom.tets.size(), std::numeric_limits<double>::infinity());
 
         for_each_index(taken.size(), [&](std::size_t k) {
             std::array<index_t, FlipPlan::kMaxNew> spare{};
             for (index_t s = 0; s < spare_per_move; ++s) spare[s] = base + static_cast<index_t>(k) * spare_per_move + s;
-            const FlipPlan& plan = *cands[taken[k]].plan;
+            const FlipPlan plan = cands[taken[k]].plan.load();
             apply_flip(dom, plan, {spare.data(), spare_per_move});
             // The slots apply_flip wrote: the old ones first, then the spare ones in order.
             for (int j = 0; j < plan.new_count; ++j) {
@@ -276,7 +316,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
             }
         });
         for (std::size_t k : taken) {
-            const FlipPlan& plan = *cands[k].plan;
+            const FlipPlan plan = cands[k].plan.load();
             for (int j = 0; j < plan.old_count; ++j) written[plan.old_tets[j]] = stamp;
             for (int j = 0; j < plan.new_count; ++j)
                 for (index_t p : plan.new_tets[j]) changed[p] = 1;

@@ -185,21 +185,26 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     gather_star_corners(dom, p, star, corners);
 
     const Vec3 here = point_vec(dom, p);
-    const Vec3 centroid = star_centroid(corners);
+    // A sliding surface point aims at its targets' feet in its face's plane.
+    const bool slides = dom.slides(p);
+    const Vec3 normal = slides ? dom.slide_normal[dom.slide_rank[p]] : Vec3{};
+    const auto in_plane = [&](const Vec3& d) { return slides ? d - dot(d, normal) * normal : d; };
+    const auto aim = [&](const Vec3& target) { return slides ? here + in_plane(target - here) : target; };
+    const Vec3 centroid = aim(star_centroid(corners));
     double reach = 0;
     for (std::size_t k = 0; k < star.size(); ++k)
         for (int i = 0; i < 4; ++i)
             if (i != corners.at[k]) reach += norm(corners.corners[k][i] - here);
     reach /= 3.0 * static_cast<double>(star.size());
-    const Vec3 odt = odt_target(corners, centroid);
+    const Vec3 odt = aim(odt_target(corners, centroid));
     // In a polish sweep a poor star also aims at the regular apices of its other poor tets (up
     // to 4): the worst one's apex alone often only trades it for the next.
-    std::array<Vec3, 7> target_store{centroid, odt, regular_apex(dom, worst_tet, p)};
+    std::array<Vec3, 7> target_store{centroid, odt, aim(regular_apex(dom, worst_tet, p))};
     std::size_t target_count = 3;
     if (polish && now.worst < kPolishBelow)
         for (std::size_t k = 1; k < star.size() && target_count < target_store.size(); ++k) {
             if (collapse[k] < kPolishBelow)
-                target_store[target_count++] = regular_apex(dom, star[k], p);
+                target_store[target_count++] = aim(regular_apex(dom, star[k], p));
         }
     const std::span<const Vec3> targets(target_store.data(), target_count);
     // Steps of 1/8 and 1/16 rarely win for a fair star and cost more trials; a poor star gets them.
@@ -211,7 +216,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     bool improved = false;
     // A pyramid apex keeps every pyramid it tops at apex_floor or better.
     const auto allowed = [&](const Vec3& x) {
-        if (p >= dom.front_points) return true;
+        if (!dom.is_apex(p)) return true;
         const index_t k = dom.apex_rank[p];
         for (index_t b = dom.apex_at[k]; b < dom.apex_at[k + 1]; ++b) {
             const auto& q = dom.apex_bases[b];
@@ -242,7 +247,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
         // the four trials go 1/2 to 1/16 of the way there (0.2 down to 0.025 of the edge): the
         // short steps win most often (bench/results/tuning-notes.md).
         constexpr double kUphillSteps[] = {0.5, 0.25, 0.125, 0.0625};
-        const Vec3 g = ascent_direction(corners, collapse);
+        const Vec3 g = in_plane(ascent_direction(corners, collapse));
         const double glen = norm(g);
         const Vec3 uphill = glen > 0 ? here + (0.4 * reach / glen) * g : here;
         for (int k = 0; k < 3; ++k) {
@@ -258,6 +263,8 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
             }
         }
     }
+    // Rounding must not let a sliding point creep off its plane.
+    if (improved && slides) best_x = best_x - (dot(normal, best_x) - dom.slide_offset[dom.slide_rank[p]]) * normal;
     if (!improved || !none_inverted(dom, p, star, best_x)) return false;
     double* c = dom.xyz.data() + std::size_t{3} * p;
     c[0] = best_x.x;
@@ -326,7 +333,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
     std::vector<index_t> todo;
-    for (index_t p = dom.apex_rank.empty() ? dom.front_points : 0; p < points; ++p)
+    for (index_t p = dom.front_moves() ? 0 : dom.front_points; p < points; ++p)
         if (dom.movable(p) && !inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
     std::vector<std::uint32_t> colour(points, kNoIndex);
     std::vector<std::uint8_t> moved, again(points, 0);
@@ -373,7 +380,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
         }
         counts.moves += moved_points.size();
         todo.clear();
-        for (index_t p = dom.apex_rank.empty() ? dom.front_points : 0; p < points; ++p)
+        for (index_t p = dom.front_moves() ? 0 : dom.front_points; p < points; ++p)
             if (again[p] && dom.movable(p)) {
                 todo.push_back(p);
                 again[p] = 0;

@@ -302,8 +302,8 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
         for (std::size_t i = 0; i < std::size_t{4} * del.tets.size(); ++i)
             v[i] = v[i] < m_used ? ids[v[i]] : n + (v[i] - m_used);
     }
-    RecoveryMesh mesh(std::move(all), del.tets);
     st.delaunay_tets = del.tets.size();
+    RecoveryMesh mesh(std::move(all), std::move(del.tets));
     st.seconds_delaunay = seconds_since(t0);
 
     // 2. Edges, then faces.
@@ -390,7 +390,7 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
     TetDomain out;
     out.front_points = n;
     out.front.assign(front.begin(), front.end());
-    out.tets = mesh.compact(keep);
+    out.tets = mesh.release(keep);
     // Points: the input ones, then the Steiner points still in a tet, in creation order.
     std::vector<index_t> new_id(mesh.point_count(), kNoIndex);
     for (index_t i = 0; i < n; ++i) new_id[i] = i;

@@ -31,13 +31,18 @@ int permutation_sign(int i0, int i1, int i2, int i3) {
 
 }  // namespace
 
-RecoveryMesh::RecoveryMesh(std::vector<double> xyz, const delaunay::TetStore& tets) : xyz_(std::move(xyz)) {
-    const index_t n = tets.size();
-    vertex_.assign(tets.vertices().begin(), tets.vertices().end());
-    neighbour_.assign(tets.neighbours().begin(), tets.neighbours().end());
+RecoveryMesh::RecoveryMesh(std::vector<double> xyz, delaunay::TetStore&& tets)
+    : xyz_(std::move(xyz)), tets_(std::move(tets)) {
     incident_.assign(point_count(), kNoIndex);
-    for (index_t t = 0; t < n; ++t)
-        for (int i = 0; i < 4; ++i) incident_[vertex_[4 * std::size_t{t} + i]] = t;
+    for (index_t t = 0; t < tets_.size(); ++t)
+        for (int i = 0; i < 4; ++i) incident_[tets_.vertex(t)[i]] = t;
+}
+
+index_t RecoveryMesh::append_slot() {
+    const index_t t = tets_.size();
+    if (std::size_t{t} + 1 > tets_.capacity()) tets_.reserve(std::size_t{t} + t / 2 + 64);
+    tets_.set_size(t + 1);
+    return t;
 }
 
 index_t RecoveryMesh::add_point(const double* p) {
@@ -67,7 +72,7 @@ void RecoveryMesh::ball(index_t v, std::vector<index_t>& out, SlotMarks& marks) 
         const int iv = local_of(vertex(t), v);
         for (int f = 0; f < 4; ++f) {
             if (f == iv) continue;
-            const index_t n = neighbour_[4 * std::size_t{t} + f];
+            const index_t n = tets_.neighbour(4 * t + static_cast<index_t>(f));
             if (n == kNoAdjacent || marks.marked(n >> 2, e)) continue;
             marks.set(n >> 2, e);
             out.push_back(n >> 2);
@@ -102,7 +107,7 @@ bool RecoveryMesh::edge_ring(index_t a, index_t b, std::vector<index_t>& tets, s
     for (int guard = 0; guard < 4096; ++guard) {
         ring.push_back(from);
         tets.push_back(cur);
-        const index_t n = neighbour_[4 * std::size_t{cur} + local_of(vertex(cur), from)];
+        const index_t n = tets_.neighbour(4 * cur + static_cast<index_t>(local_of(vertex(cur), from)));
         if (n == kNoAdjacent) return false;
         if ((n >> 2) == t0) return true;
         cur = n >> 2;
@@ -145,7 +150,7 @@ bool RecoveryMesh::replace(std::span<const index_t> old_tets, std::span<const Te
     boundary_.clear();
     for (index_t t : old_tets) {
         for (int f = 0; f < 4; ++f) {
-            const index_t n = neighbour_[4 * std::size_t{t} + f];
+            const index_t n = tets_.neighbour(4 * t + static_cast<index_t>(f));
             if (n != kNoAdjacent && marked(n >> 2, e)) continue;
             const auto fv = face(t, f);
             boundary_.push_back({sorted3(fv[0], fv[1], fv[2]), n, false});
@@ -183,8 +188,8 @@ bool RecoveryMesh::replace(std::span<const index_t> old_tets, std::span<const Te
     slots.reserve(new_tets.size());
     for (index_t t : old_tets) {
         for (int i = 0; i < 4; ++i)
-            if (incident_[vertex_[4 * std::size_t{t} + i]] == t) incident_[vertex_[4 * std::size_t{t} + i]] = kNoIndex;
-        vertex_[4 * std::size_t{t}] = kFreeSlot;
+            if (incident_[tets_.vertex(t)[i]] == t) incident_[tets_.vertex(t)[i]] = kNoIndex;
+        tets_.vertex(t)[0] = kFreeSlot;
     }
     std::size_t reused = 0;
     for (std::size_t i = 0; i < new_tets.size(); ++i) {
@@ -194,51 +199,50 @@ bool RecoveryMesh::replace(std::span<const index_t> old_tets, std::span<const Te
             slots.push_back(free_.back());
             free_.pop_back();
         } else {
-            slots.push_back(slot_count());
-            vertex_.resize(vertex_.size() + 4);
-            neighbour_.resize(neighbour_.size() + 4);
+            slots.push_back(append_slot());
         }
     }
     for (; reused < old_tets.size(); ++reused) free_.push_back(old_tets[reused]);
     for (std::size_t i = 0; i < new_tets.size(); ++i)
         for (int k = 0; k < 4; ++k) {
-            vertex_[4 * std::size_t{slots[i]} + k] = new_tets[i][k];
+            tets_.vertex(slots[i])[k] = new_tets[i][k];
             incident_[new_tets[i][k]] = slots[i];
         }
     for (std::size_t i = 0; i < nf; ++i) {
         const index_t code = 4 * slots[i / 4] + static_cast<index_t>(i % 4);
         if (partner[i] < nf) {
-            neighbour_[code] = 4 * slots[partner[i] / 4] + static_cast<index_t>(partner[i] % 4);
+            tets_.neighbour(code) = 4 * slots[partner[i] / 4] + static_cast<index_t>(partner[i] % 4);
         } else {
             const index_t out = boundary_[partner[i] - nf].outside;
-            neighbour_[code] = out;
-            if (out != kNoAdjacent) neighbour_[out] = code;
+            tets_.neighbour(code) = out;
+            if (out != kNoAdjacent) tets_.neighbour(out) = code;
         }
     }
     if (added) *added = std::move(slots);
     return true;
 }
 
-delaunay::TetStore RecoveryMesh::compact(std::span<const std::uint8_t> keep) const {
+delaunay::TetStore RecoveryMesh::release(std::span<const std::uint8_t> keep) {
     std::vector<index_t> new_id(slot_count(), kNoIndex);
     index_t n = 0;
     for (index_t t = 0; t < slot_count(); ++t)
         if (alive(t) && keep[t]) new_id[t] = n++;
-    delaunay::TetStore out;
-    out.reserve(n);
-    out.set_size(n);
+    // new_id[t] <= t: row new_id[t] is t's own or one already moved down.
     for (index_t t = 0; t < slot_count(); ++t) {
-        if (new_id[t] == kNoIndex) continue;
-        index_t* v = out.vertex(new_id[t]);
+        const index_t to = new_id[t];
+        if (to == kNoIndex) continue;
         for (int i = 0; i < 4; ++i) {
-            v[i] = vertex_[4 * std::size_t{t} + i];
-            const index_t nb = neighbour_[4 * std::size_t{t} + i];
-            const index_t code = 4 * new_id[t] + static_cast<index_t>(i);
-            out.neighbour(code) = (nb == kNoAdjacent || new_id[nb >> 2] == kNoIndex) ? kNoAdjacent
-                                                                                      : 4 * new_id[nb >> 2] + (nb & 3);
+            tets_.vertex(to)[i] = tets_.vertex(t)[i];
+            const index_t nb = tets_.neighbour(4 * t + static_cast<index_t>(i));
+            tets_.neighbour(4 * to + static_cast<index_t>(i)) =
+                (nb == kNoAdjacent || new_id[nb >> 2] == kNoIndex) ? kNoAdjacent : 4 * new_id[nb >> 2] + (nb & 3);
         }
     }
-    return out;
+    tets_.set_size(n);
+    tets_.shrink_to_fit();
+    incident_.clear();
+    free_.clear();
+    return std::move(tets_);
 }
 
 }  // namespace tubemesh::tets

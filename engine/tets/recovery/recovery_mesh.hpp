@@ -1,8 +1,9 @@
 #pragma once
-// The mutable tetrahedral mesh of boundary recovery: vertex and neighbour rows as in the
-// kernel's TetStore (4 per slot, neighbour 4*t + f across face f, kNoAdjacent on the box
-// hull), plus what local modification needs and the kernel does not keep: one incident tet
-// per vertex, a free-slot list, and epoch marks for traversals.
+// The mutable tetrahedral mesh of boundary recovery: the kernel's TetStore itself, taken over
+// from the Delaunay tetrahedralisation and handed on to the tet domain (4 rows per slot,
+// neighbour 4*t + f across face f, kNoAdjacent on the box hull), plus what local modification
+// needs and the kernel does not keep: one incident tet per vertex, a free-slot list, and epoch
+// marks for traversals.
 //
 // Every modification (flip, split, contraction) is one call to replace(): remove a set of
 // tets, add tets that fill the same region. replace() relinks the new tets to each other and
@@ -45,8 +46,8 @@ private:
 
 class RecoveryMesh {
 public:
-    // Takes the kernel's tets over `xyz` (3 per point; box corners included).
-    RecoveryMesh(std::vector<double> xyz, const delaunay::TetStore& tets);
+    // Takes over the kernel's tets over `xyz` (3 per point; box corners included).
+    RecoveryMesh(std::vector<double> xyz, delaunay::TetStore&& tets);
 
     index_t point_count() const { return static_cast<index_t>(xyz_.size() / 3); }
     const double* point(index_t v) const { return xyz_.data() + std::size_t{3} * v; }
@@ -54,10 +55,10 @@ public:
     // A new vertex (no tet yet: the caller splits tets with replace()).
     index_t add_point(const double* p);
 
-    index_t slot_count() const { return static_cast<index_t>(vertex_.size() / 4); }
-    bool alive(index_t t) const { return vertex_[4 * std::size_t{t}] != delaunay::kFreeSlot; }
-    const index_t* vertex(index_t t) const { return vertex_.data() + 4 * std::size_t{t}; }
-    index_t neighbour(index_t code) const { return neighbour_[code]; }
+    index_t slot_count() const { return tets_.size(); }
+    bool alive(index_t t) const { return tets_.vertex(t)[0] != delaunay::kFreeSlot; }
+    const index_t* vertex(index_t t) const { return tets_.vertex(t); }
+    index_t neighbour(index_t code) const { return tets_.neighbour(code); }
     Tet tet(index_t t) const { return {vertex(t)[0], vertex(t)[1], vertex(t)[2], vertex(t)[3]}; }
     // A live tet containing v, or kNoIndex when v is in no tet.
     index_t incident_tet(index_t v) const { return incident_[v]; }
@@ -99,13 +100,17 @@ public:
     bool marked(index_t t, std::uint32_t epoch) const { return marks_.marked(t, epoch); }
     void set_mark(index_t t, std::uint32_t epoch) { marks_.set(t, epoch); }
 
-    // Live tets, compacted into a kernel store (neighbours renumbered).
-    delaunay::TetStore compact(std::span<const std::uint8_t> keep) const;
+    // The live tets with keep[t] set, moved down in slot order in the store itself (neighbours
+    // renumbered, kNoAdjacent towards a dropped tet), and the store handed over: the mesh is
+    // empty afterwards.
+    delaunay::TetStore release(std::span<const std::uint8_t> keep);
 
 private:
+    // A new slot at the end (capacity grows by half: a pointer into the rows moves then).
+    index_t append_slot();
+
     std::vector<double> xyz_;
-    std::vector<index_t> vertex_;
-    std::vector<index_t> neighbour_;
+    delaunay::TetStore tets_;
     std::vector<index_t> incident_;
     std::vector<index_t> free_;
     SlotMarks marks_;

@@ -90,28 +90,25 @@ std::vector<index_t> active_faces(const MeshView& m, double tolerance) {
 
 std::vector<index_t> active_faces(const MeshView& m, double tolerance, TooBigMemo& memo) {
     const index_t n = m.tets.size();
-    if (memo.ids.size() < n) {
-        memo.ids.resize(n, {kFreeSlot, kFreeSlot, kFreeSlot, kFreeSlot});
-        memo.big.resize(n, 0);
-    }
+    const index_t known_slots = static_cast<index_t>(std::min<std::size_t>(memo.big.size(), n));
+    const index_t known_points = memo.points;
+    memo.big.resize(n, 0);
     std::atomic<std::uint64_t> tests{0};
     tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
         std::uint64_t made = 0;
         for (index_t t = r.begin(); t < r.end(); ++t) {
             const index_t* v = m.tets.vertex(t);
-            std::array<index_t, 4>& known = memo.ids[t];
             if (v[0] == kFreeSlot) {
-                known[0] = kFreeSlot;
                 memo.big[t] = 0;
-            } else if (!std::equal(v, v + 4, known.begin())) {
+            } else if (t >= known_slots || std::max({v[0], v[1], v[2], v[3]}) >= known_points) {
                 memo.big[t] = tet_too_big(m, t, tolerance) ? 1 : 0;
-                std::copy_n(v, 4, known.begin());
                 ++made;
             }
         }
         tests.fetch_add(made, std::memory_order_relaxed);
     });
     memo.tests += tests.load();
+    memo.points = static_cast<index_t>(m.xyz.size() / 3);
     const std::vector<std::uint8_t>& big = memo.big;
     // Each fixed chunk of slots lists its faces; joined in chunk order they stay increasing.
     constexpr index_t kChunk = 16384;

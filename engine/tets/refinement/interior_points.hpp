@@ -47,14 +47,16 @@ bool tet_too_big(const MeshView& mesh, index_t tet, double tolerance);
 // is not too big (the front of the resolved region), in increasing order. Parallel.
 std::vector<index_t> active_faces(const MeshView& mesh, double tolerance);
 
-// tet_too_big's answers kept from one round to the next, per tet slot with the slot's four point
-// ids in order: points never move during refinement and their sizes are fixed, so a slot whose
-// ids are unchanged has the same answer, and a round only tests the tets the kernel made. Valid
-// for one point array and size array (appended to only) and one tolerance.
+// tet_too_big's answers kept from one round to the next, per tet slot: points never move during
+// refinement and their sizes are fixed, so a slot holding the tet it held at the last call has
+// the same answer, and a round only tests the tets the kernel made. Every tet the kernel makes
+// has the point it inserts as a vertex, so a slot's tet is new exactly when it names a point
+// added since the last call: no copy of the vertex rows is kept. Valid for one kernel mesh, one
+// point array and size array (appended to only) and one tolerance.
 struct TooBigMemo {
-    std::vector<std::array<index_t, 4>> ids;  // ids[t][0] == kFreeSlot: slot t not tested yet
-    std::vector<std::uint8_t> big;            // the answer for ids[t]
-    std::uint64_t tests = 0;                  // tet_too_big calls made through the memo
+    std::vector<std::uint8_t> big;  // the answer for slot t at the last call (0 for a free slot)
+    index_t points = 0;             // points at the last call: a tet naming a later one is new
+    std::uint64_t tests = 0;        // tet_too_big calls made through the memo
 };
 
 // active_faces with the answers of earlier rounds reused (and this round's stored) in `memo`;

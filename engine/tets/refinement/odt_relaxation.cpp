@@ -79,8 +79,8 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 // are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
 // so the way between them is short and inside the region. Points that fail that too (none on
 // the reference cases) are left without tets. Returns how many needed the second walk.
-index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
-    const index_t fixed = recovered.point_count(), n = dom.point_count();
+index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts) {
+    const index_t fixed = recovered.points, n = dom.point_count();
     std::vector<index_t> used;
     used.reserve(n - fixed);
     {
@@ -89,15 +89,19 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
         for (index_t p = fixed; p < n; ++p)
             if (in_tet[p]) used.push_back(p);
     }
-    delaunay::Triangulation tri;
-    tri.adopt(std::span<const double>(recovered.xyz), recovered.tets.clone());
-    // Every free point keeps its id (unused ones too, never inserted): kernel id = domain id.
-    std::vector<index_t> ids(n - fixed);
-    for (index_t p = fixed; p < n; ++p) ids[p - fixed] = p;
-    tri.add_points(std::span<const double>(dom.xyz).subspan(std::size_t{3} * fixed), ids);
+    // The old tets' vertex rows alone (for the blocked points' second walks): the old store's
+    // neighbour rows would only add to the peak while the new mesh is built.
+    const std::vector<index_t> old_rows(dom.tets.vertices().begin(), dom.tets.vertices().end());
+    dom.tets = delaunay::TetStore();
     std::vector<double> used_xyz(3 * used.size());
     for (std::size_t i = 0; i < used.size(); ++i) std::copy_n(dom.point(used[i]), 3, used_xyz.begin() + 3 * i);
     std::vector<index_t> order = delaunay::curve_order(used_xyz);
+    used_xyz = {};
+    // The kernel holds every point (kernel id = domain id; the free ones not in a tet yet, the
+    // unused ones never inserted) and the recovered tets while it inserts.
+    delaunay::Triangulation tri;
+    tri.adopt(std::move(dom.xyz), recovered.tets.clone());
+    dom.xyz.clear();
     for (index_t& k : order) k = used[k];
     tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
     constexpr index_t kMinPointsPerPart = 64;
@@ -109,8 +113,8 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
         std::vector<std::vector<index_t>> near(blocked.size());
         std::vector<index_t> slot(n, kNoIndex);
         for (std::size_t i = 0; i < blocked.size(); ++i) slot[blocked[i]] = static_cast<index_t>(i);
-        for (index_t t = 0; t < dom.tets.size(); ++t) {
-            const index_t* v = dom.tets.vertex(t);
+        for (std::size_t t = 0; t < old_rows.size(); t += 4) {
+            const index_t* v = old_rows.data() + t;
             for (int i = 0; i < 4; ++i)
                 if (is_blocked[v[i]])
                     for (int j = 0; j < 4; ++j)
@@ -132,18 +136,19 @@ index_t reinsert(TetDomain& dom, const TetDomain& recovered, unsigned parts) {
         tri.insert(blocked, 1, kMinPointsPerPart);
     }
     dom.tets = tri.finish();
+    dom.xyz = tri.take_points();
     return static_cast<index_t>(blocked.size());
 }
 
 }  // namespace
 
-RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
+RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
                              const Parallelism& par, const RelaxationOptions& options) {
     const auto t0 = Clock::now();
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
-    const index_t fixed = recovered.point_count();
-    if (fixed > domain.point_count() || recovered.front_points != domain.front_points)
+    const index_t fixed = recovered.points;
+    if (fixed > domain.point_count() || fixed < domain.front_points)
         throw Error("relaxation: the recovered mesh is not the start of the domain");
     RelaxationStats stats;
     if (options.iterations == 0) return stats;

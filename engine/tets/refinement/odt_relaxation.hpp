@@ -14,7 +14,7 @@
 //
 // Parallel and deterministic: every point's move is computed from the positions before the
 // round, and the insertion runs the Delaunay kernel with a fixed part count.
-// Points [0, recovered.point_count()) (the front's and recovery's Steiner points) never move.
+// Points [0, recovered.points) (the front's and recovery's Steiner points) never move.
 #include <cstdint>
 #include <span>
 
@@ -38,8 +38,8 @@ struct RelaxationStats {
     double seconds = 0;
 };
 
-// `recovered`: the domain as boundary recovery left it (before refinement); its points are the
-// first points of `domain` and its tets fill the same region. `sizes`: the target size at each
+// `recovered`: the tets boundary recovery left (before refinement), over the first points of
+// `domain`, filling the same region. `sizes`: the target size at each
 // point of `domain` by id (point_sizes), read as the density's h; a point keeps its size when
 // it moves (within its star, so by about its h at most, and the field grows by at most g - 1
 // per unit length).
@@ -48,7 +48,7 @@ struct RelaxationStats {
 // down, in order.
 // The kernel inserts with par.parts parts, in the caller's oneTBB arena: the result depends on
 // the input and that count only.
-RelaxationStats relax_points(TetDomain& domain, const TetDomain& recovered, std::span<const double> sizes,
+RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
                              const Parallelism& par, const RelaxationOptions& options = {});
 
 }  // namespace tubemesh::tets

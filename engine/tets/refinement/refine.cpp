@@ -21,18 +21,20 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
 
     {
         delaunay::Triangulation tri;
-        tri.adopt(domain.xyz, std::move(domain.tets));
+        // The kernel holds the domain's points and tets while it refines (kernel id = domain id).
+        tri.adopt(std::move(domain.xyz), std::move(domain.tets));
+        domain.xyz.clear();
         domain.tets = delaunay::TetStore();
-        // Points in the mesh (inserted), for the distance test; kernel ids follow domain.xyz.
-        GrowingPoints live(domain.xyz);
+        // Points in the mesh (inserted), for the distance test.
+        GrowingPoints live(tri.points());
         TooBigMemo memo;
         ProposalMemo proposals;
         // h at every point, by kernel id: the front's and Steiner points' now, each inserted
         // point's from its candidate.
-        std::vector<double> sizes = point_sizes(domain.xyz, space);
+        std::vector<double> sizes = point_sizes(tri.points(), space);
         const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
-            const MeshView view{tri.store(), domain.xyz, sizes};
+            const MeshView view{tri.store(), tri.points(), sizes};
             const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
             stats.too_big_left = static_cast<index_t>(faces.size());
             if (faces.empty()) break;
@@ -56,7 +58,6 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 ids[i] = base + static_cast<index_t>(i);
             }
             tri.add_points(xyz, ids);
-            domain.xyz.insert(domain.xyz.end(), xyz.begin(), xyz.end());
             for (const Candidate& c : batch) sizes.push_back(c.h);
             for (std::size_t i = 0; i < batch.size(); ++i) tri.set_walk_start(ids[i], batch[i].tet);
             tri.reserve_tets(std::size_t{tri.store().size()} + 8 * batch.size() + 1024);
@@ -82,6 +83,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         stats.kernel_conflicts = k.conflicts;
         stats.duplicates = tri.duplicates().size();
         domain.tets = tri.finish();
+        domain.xyz = tri.take_points();
 
         // Drop the points the kernel skipped: renumber the new points densely, in order.
         const std::vector<index_t> to = drop_unused_points(domain, first_new);

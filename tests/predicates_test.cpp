@@ -195,6 +195,9 @@ TEST(Predicates, Orient3dMatchesExactArithmetic) {
     const char* kNames[8] = {"plane+ulps", "line+ulps", "small grids", "scaled 2^-1060..2^960", "wide-range ties",
                              "wide-range random", "anisotropic grids", "uniform"};
     Tally total;
+    // The pair version sees each case in lane 0 beside the previous one in lane 1.
+    Quad previous = orient3d_case(r, 7);
+    int previous_want = ref.orient3d(previous[0].data(), previous[1].data(), previous[2].data(), previous[3].data());
     for (int kind = 0; kind < 8; ++kind) {
         Tally t;
         for (int i = 0; i < kPerKind[kind]; ++i) {
@@ -202,12 +205,20 @@ TEST(Predicates, Orient3dMatchesExactArithmetic) {
             const int want = ref.orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data());
             const int got = orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data());
             const int got_inline = orient3d_inline(q[0].data(), q[1].data(), q[2].data(), q[3].data());
+            const double* const lanes[2][4] = {{q[0].data(), q[1].data(), q[2].data(), q[3].data()},
+                                               {previous[0].data(), previous[1].data(), previous[2].data(),
+                                                previous[3].data()}};
+            int got_pair[2];
+            orient3d_inline_pair(lanes, got_pair);
+            EXPECT_EQ(got_pair[1], previous_want);
+            previous = q;
+            previous_want = want;
             ++t.cases;
             t.zeros += want == 0;
             t.naive_wrong += sign(naive_orient3d(q[0], q[1], q[2], q[3])) != want;
-            if (got != want || got_inline != want) {
+            if (got != want || got_inline != want || got_pair[0] != want) {
                 if (++t.mismatches <= 5)
-                    ADD_FAILURE() << kNames[kind] << ": got " << got << "/" << got_inline << ", want " << want
+                    ADD_FAILURE() << kNames[kind] << ": got " << got << "/" << got_inline << "/" << got_pair[0] << ", want " << want
                                   << " for " << q[0][0] << " " << q[0][1] << " " << q[0][2] << " | " << q[1][0] << " "
                                   << q[1][1] << " " << q[1][2] << " | " << q[2][0] << " " << q[2][1] << " " << q[2][2]
                                   << " | " << q[3][0] << " " << q[3][1] << " " << q[3][2];

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <span>
@@ -141,6 +142,38 @@ TEST(TetCollapse, InvertedTetIsNegative) {
 
 // ---------------------------------------------------------------------------------------
 // Hexahedron.
+
+#if TUBEMESH_VEC3_PAIR
+// The two-lane collapse gives each lane tet_collapse's bits: random, inverted, flat, needle and
+// coincident-point tets, in both lanes.
+TEST(TetCollapse, PairMatchesOneAtATime) {
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<std::array<Vec3, 4>> tets;
+    for (int i = 0; i < 2000; ++i) {
+        std::array<Vec3, 4> t;
+        for (Vec3& p : t) p = {u(rng), u(rng), u(rng)};
+        tets.push_back(t);
+    }
+    tets.push_back(regular_tet());
+    tets.push_back({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}});        // flat
+    tets.push_back({{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}}});        // collinear
+    tets.push_back({{{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}}});        // one point
+    tets.push_back({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3, 0.3, 1e-9}}});  // sliver
+    for (std::size_t i = 0; i + 1 < tets.size(); ++i) {
+        const std::array<Vec3, 4>& a = tets[i];
+        const std::array<Vec3, 4>& b = tets[tets.size() - 1 - i];
+        std::array<Vec3Pair, 4> p;
+        for (int k = 0; k < 4; ++k) p[k] = pair_of(a[k], b[k]);
+        const __m128d q = tet_collapse_pair(p);
+        const double want[2] = {tet_collapse(a), tet_collapse(b)};
+        for (int l = 0; l < 2; ++l) {
+            const double got = lane(q, l);
+            EXPECT_EQ(std::memcmp(&got, &want[l], sizeof(double)), 0) << i << " lane " << l;
+        }
+    }
+}
+#endif
 
 TEST(HexQuality, UnitCubeIsPerfect) {
     const HexQuality q = hex_quality(unit_cube());

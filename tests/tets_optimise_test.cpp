@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 #include <vector>
@@ -308,6 +309,97 @@ TEST(test_tets_optimise, IncidenceAndColouringMatchTheSerialGreedy) {
             }
         });
     }
+}
+
+// star_quality and ascent_direction evaluate tets two at a time: the same bits as one tet at a
+// time (a star of one tet each), and star_quality stops at the same tet for any give-up value.
+TEST(test_tets_optimise, StarQualityAndAscentInPairsMatchTetByTet) {
+    const TetDomain d = sphere_domain(400, 1600, 5);
+    const Incidence inc = build_incidence(d);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+    StarCorners whole, single;
+    std::size_t checked = 0;
+    for (index_t p = d.front_points; p < d.point_count(); p += 7) {
+        const auto star = inc.of(p);
+        ASSERT_GE(star.size(), 4u);
+        gather_star_corners(d, p, star, whole);
+        std::vector<double> q(star.size());
+        for (int trial = 0; trial < 4; ++trial) {
+            const Vec3 x = point_vec(d, p) + Vec3{jitter(rng), jitter(rng), jitter(rng)};
+            for (std::size_t k = 0; k < star.size(); ++k) {
+                gather_star_corners(d, p, star.subspan(k, 1), single);
+                q[k] = star_quality(single, x).sum;
+            }
+            // Give up nowhere, at the median tet's value and at the first tet's.
+            std::vector<double> sorted = q;
+            std::ranges::sort(sorted);
+            for (double give_up : {-std::numeric_limits<double>::infinity(), sorted[sorted.size() / 2], q[0]}) {
+                StarQuality expected;
+                for (double v : q) {
+                    expected.worst = std::min(expected.worst, v);
+                    expected.sum += v;
+                    if (v <= give_up) break;
+                }
+                const StarQuality got = star_quality(whole, x, give_up);
+                EXPECT_EQ(std::memcmp(&got.worst, &expected.worst, sizeof(double)), 0) << p;
+                EXPECT_EQ(std::memcmp(&got.sum, &expected.sum, sizeof(double)), 0) << p;
+                ++checked;
+            }
+        }
+        // The ascent the same way: the whole star's sum equals the tet-by-tet one (which adds to
+        // zero exactly), a tet at or below zero left out, odd and even stars alike.
+        for (std::size_t count : {star.size(), star.size() - 1}) {
+            gather_star_corners(d, p, star.first(count), whole);
+            std::vector<double> collapse(count);
+            for (std::size_t k = 0; k < count; ++k) collapse[k] = k % 5 == 3 ? 0.0 : 0.2 + 0.1 * static_cast<double>(k % 4);
+            Vec3 expected{0, 0, 0};
+            for (std::size_t k = 0; k < count; ++k) {
+                gather_star_corners(d, p, star.subspan(k, 1), single);
+                expected = expected + ascent_direction(single, std::span<const double>(collapse).subspan(k, 1));
+            }
+            const Vec3 got = ascent_direction(whole, collapse);
+            EXPECT_EQ(std::memcmp(&got, &expected, sizeof(Vec3)), 0) << p;
+        }
+    }
+    EXPECT_GT(checked, 500u);
+}
+
+// odt_target evaluates tets two at a time: the same bits as the plain loop over the tets.
+TEST(test_tets_optimise, OdtTargetInPairsMatchesThePlainLoop) {
+    const TetDomain d = sphere_domain(400, 1600, 9);
+    const Incidence inc = build_incidence(d);
+    const auto plain = [](const StarCorners& star, const std::vector<double>& weight) {
+        Vec3 sum{0, 0, 0};
+        double total = 0;
+        for (std::size_t k = 0; k < star.corners.size(); ++k) {
+            const Vec3 a = star.corners[k][0];
+            const Vec3 b = star.corners[k][1] - a, c = star.corners[k][2] - a, e = star.corners[k][3] - a;
+            const double det = dot(b, cross(c, e));
+            if (!(det > 0)) continue;
+            const Vec3 centre = a + (0.5 / det) * (norm2(b) * cross(c, e) + norm2(c) * cross(e, b) + norm2(e) * cross(b, c));
+            const double w = weight.empty() ? det : det * weight[k];
+            sum = sum + w * centre;
+            total += w;
+        }
+        return (1.0 / total) * sum;
+    };
+    StarCorners star;
+    std::size_t odd = 0, even = 0;
+    for (index_t p = d.front_points; p < d.point_count(); p += 5) {
+        // An inner point's star has an even count of tets; its first tets alone, an odd one.
+        const auto whole = inc.of(p);
+        gather_star_corners(d, p, p % 2 ? whole : whole.first(whole.size() - 1), star, false);
+        (star.corners.size() % 2 ? odd : even) += 1;
+        std::vector<double> weight(star.corners.size());
+        for (std::size_t k = 0; k < weight.size(); ++k) weight[k] = 1.0 + 0.1 * static_cast<double>(k % 7);
+        for (const auto& w : {std::vector<double>{}, weight}) {
+            const Vec3 got = odt_target(star, {9, 9, 9}, w), want = plain(star, w);
+            EXPECT_EQ(std::memcmp(&got, &want, sizeof(Vec3)), 0) << p;
+        }
+    }
+    EXPECT_GT(odd, 20u);
+    EXPECT_GT(even, 20u);
 }
 
 TEST(test_tets_optimise, RejectsBadOptions) {

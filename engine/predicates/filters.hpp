@@ -30,6 +30,10 @@
 #include <cfloat>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #if defined(__FAST_MATH__)
 #error "tubemesh predicates: the floating-point filters are not valid under -ffast-math"
 #endif
@@ -63,6 +67,36 @@ inline int orient3d_filter(const double* a, const double* b, const double* c, co
     const double bound = kOrient3dBound * ((mx * my) * mz);
     return decided_sign(det, bound);
 }
+
+#if defined(__SSE2__)
+// orient3d_filter for two quadruples at once, one per SSE2 lane (p[l] = {a, b, c, d} of lane l):
+// the same operations, so the same answers, written to sign[0] and sign[1].
+inline void orient3d_filter_pair(const double* const p[2][4], int sign[2]) {
+    const auto diff = [&](int v, int k) {
+        return _mm_sub_pd(_mm_set_pd(p[1][v][k], p[0][v][k]), _mm_set_pd(p[1][0][k], p[0][0][k]));
+    };
+    const __m128d px = diff(1, 0), py = diff(1, 1), pz = diff(1, 2);
+    const __m128d qx = diff(2, 0), qy = diff(2, 1), qz = diff(2, 2);
+    const __m128d rx = diff(3, 0), ry = diff(3, 1), rz = diff(3, 2);
+    const auto mul = [](__m128d x, __m128d y) { return _mm_mul_pd(x, y); };
+    const auto sub = [](__m128d x, __m128d y) { return _mm_sub_pd(x, y); };
+    const __m128d det = _mm_add_pd(sub(mul(pz, sub(mul(qx, ry), mul(rx, qy))), mul(qz, sub(mul(px, ry), mul(rx, py)))),
+                                   mul(rz, sub(mul(px, qy), mul(qx, py))));
+    const __m128d sign_bit = _mm_set1_pd(-0.0);
+    const auto abs = [&](__m128d x) { return _mm_andnot_pd(sign_bit, x); };
+    // std::max(a, b) is (a < b ? b : a) = maxpd(b, a); std::min(a, b) is (b < a ? b : a) = minpd(b, a).
+    const auto max3v = [](__m128d a, __m128d b, __m128d c) { return _mm_max_pd(_mm_max_pd(c, b), a); };
+    const auto min3v = [](__m128d a, __m128d b, __m128d c) { return _mm_min_pd(_mm_min_pd(c, b), a); };
+    const __m128d mx = max3v(abs(px), abs(qx), abs(rx)), my = max3v(abs(py), abs(qy), abs(ry)),
+                  mz = max3v(abs(pz), abs(qz), abs(rz));
+    const __m128d in_window = _mm_and_pd(_mm_cmpge_pd(min3v(mx, my, mz), _mm_set1_pd(kOrient3dMin)),
+                                         _mm_cmple_pd(max3v(mx, my, mz), _mm_set1_pd(kOrient3dMax)));
+    const __m128d bound = mul(_mm_set1_pd(kOrient3dBound), mul(mul(mx, my), mz));
+    const int positive = _mm_movemask_pd(_mm_and_pd(in_window, _mm_cmpgt_pd(det, bound)));
+    const int negative = _mm_movemask_pd(_mm_and_pd(in_window, _mm_cmplt_pd(det, _mm_xor_pd(bound, sign_bit))));
+    for (int l = 0; l < 2; ++l) sign[l] = ((positive >> l) & 1) - ((negative >> l) & 1);
+}
+#endif
 
 // Sign of the insphere determinant (see insphere.cpp) when certain, else 0.
 inline int insphere_filter(const double* a, const double* b, const double* c, const double* d, const double* e) {

@@ -7,6 +7,7 @@
 
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/vec3_ops.hpp"
+#include "engine/mesh/vec3_pair.hpp"
 
 namespace tubemesh {
 
@@ -19,12 +20,15 @@ namespace tubemesh {
 // is 3V / A_i^(3/2), with 3V = det / 2 and det = 6V the signed orientation determinant. Its
 // minimum over the vertices is at the largest face when V > 0 and at the smallest one when
 // V < 0 (the most negative value), so only one face area is needed.
+
+// The regular tet's value, edge a: height a·sqrt(2/3) over sqrt(sqrt(3)/4·a²). a cancels, so
+// this is exact and not the rounded 1.2408 of the paper (folded to a constant when inlined).
+inline double regular_tet_collapse_scale() { return std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0); }
+
 // The collapse from 3V and the four faces' 4·area² values (in any order): for callers that
 // already hold some of them (the smoothing keeps the face opposite a moving point).
 inline double tet_collapse_from(double three_volume, const std::array<double, 4>& area4) {
-    // The regular tet's value, edge a: height a·sqrt(2/3) over sqrt(sqrt(3)/4·a²). a cancels,
-    // so this is exact and not the rounded 1.2408 of the paper.
-    const double regular = std::sqrt(2.0 / 3.0) / std::sqrt(std::sqrt(3.0) / 4.0);
+    const double regular = regular_tet_collapse_scale();
     const auto [a, b, c, d] = area4;
     const double area = 0.5 * std::sqrt(three_volume < 0 ? std::min({a, b, c, d}) : std::max({a, b, c, d}));
     // V < 0 implies every face has an area; a zero area here means V = 0 and the four
@@ -40,6 +44,30 @@ inline double tet_collapse(const std::array<Vec3, 4>& p) {
     return tet_collapse_from(three_volume, {norm2(cross(p[2] - p[1], p[3] - p[1])), norm2(cross(e2, e3)),
                                             norm2(cross(e1, e3)), norm2(cross(e1, e2))});
 }
+
+#if TUBEMESH_VEC3_PAIR
+// tet_collapse_from and tet_collapse for two tets at once, one per lane: the same operations in
+// the same order, so each lane holds the scalar function's bits.
+inline __m128d tet_collapse_from_pair(__m128d three_volume, __m128d f0, __m128d f1, __m128d f2, __m128d f3) {
+    // std::max({f0..f3}) keeps r unless r < f: maxpd(f, r) is (f > r ? f : r), NaNs included;
+    // std::min({..}) takes f when f < r: minpd(f, r).
+    const __m128d largest = _mm_max_pd(f3, _mm_max_pd(f2, _mm_max_pd(f1, f0)));
+    const __m128d smallest = _mm_min_pd(f3, _mm_min_pd(f2, _mm_min_pd(f1, f0)));
+    const __m128d negative = _mm_cmplt_pd(three_volume, _mm_setzero_pd());
+    const __m128d chosen = _mm_or_pd(_mm_and_pd(negative, smallest), _mm_andnot_pd(negative, largest));
+    const __m128d area = _mm_mul_pd(_mm_set1_pd(0.5), _mm_sqrt_pd(chosen));
+    const __m128d value = _mm_div_pd(_mm_div_pd(three_volume, _mm_mul_pd(area, _mm_sqrt_pd(area))),
+                                     _mm_set1_pd(regular_tet_collapse_scale()));
+    return _mm_and_pd(_mm_cmpgt_pd(area, _mm_setzero_pd()), value);  // 0 where !(area > 0)
+}
+
+inline __m128d tet_collapse_pair(const std::array<Vec3Pair, 4>& p) {
+    const Vec3Pair e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
+    const __m128d three_volume = _mm_mul_pd(_mm_set1_pd(0.5), dot(e1, cross(e2, e3)));
+    return tet_collapse_from_pair(three_volume, norm2(cross(p[2] - p[1], p[3] - p[1])), norm2(cross(e2, e3)),
+                                  norm2(cross(e1, e3)), norm2(cross(e1, e2)));
+}
+#endif
 
 // Hexahedron: scaled Jacobian J_m (minimum over the 8 corners of det(e1,e2,e3)/(|e1||e2||e3|))
 // and condition number (maximum over the corners of |A|·|A^-1|/3, Frobenius norms;

@@ -31,7 +31,9 @@ void compute_collapses(const TetDomain& dom, std::vector<double>& q) {
     const index_t n = dom.tets.size();
     q.resize(n);
     tbb::parallel_for(tbb::blocked_range<index_t>(0, n, 1024), [&](const tbb::blocked_range<index_t>& r) {
-        for (index_t t = r.begin(); t != r.end(); ++t) {
+        index_t t = r.begin();
+        for (; t + 1 < r.end(); t += 2) collapse_of_pair(dom, dom.tets.vertex(t), dom.tets.vertex(t + 1), &q[t]);
+        if (t < r.end()) {
             const index_t* v = dom.tets.vertex(t);
             q[t] = collapse_of(dom, v[0], v[1], v[2], v[3]);
         }

@@ -368,12 +368,13 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     // so they run in parallel; only the greedy pass over those short lists is serial.
     std::vector<std::vector<index_t>> earlier(n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-        std::vector<Neighbor> near;
+        // Only whether an earlier neighbour is taken matters, not their order: no sort.
+        std::vector<std::pair<index_t, double>> near;
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
             if (!free_of_points[i]) continue;
-            cands->within({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
-            for (const Neighbor& q : near)
-                if (q.index < i && free_of_points[q.index]) earlier[i].push_back(q.index);
+            cands->within_unordered({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+            for (const auto& hit : near)
+                if (hit.first < i && free_of_points[hit.first]) earlier[i].push_back(hit.first);
         }
     });
     std::vector<std::uint8_t> taken(n, 0);

@@ -28,7 +28,7 @@ struct MoveScratch {
 // keeps its star positive).
 bool move_point(const TetDomain& dom, index_t p, std::span<const index_t> star, std::span<const double> sizes,
                 MoveScratch& s, double* to) {
-    gather_star_corners(dom, p, star, s.corners);
+    gather_star_corners(dom, p, star, s.corners, false);
     s.weight.resize(star.size());
     for (std::size_t k = 0; k < star.size(); ++k) {
         const index_t* v = dom.tets.vertex(star[k]);

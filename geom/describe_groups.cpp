@@ -80,7 +80,9 @@ void describe_groups(const Model& model, const TubeSearch& tubes, const HybridMe
                      MeshDescription& description) {
     description.length_unit = model.report().length_unit;
     const bool built = model.report().format == "built";
-    const BoundingBox box = model.bounds();
+    // The box names the sides of built blocks only; an optimal box of a large imported solid
+    // costs more than the tet step's boundary recovery.
+    const BoundingBox box = built ? model.bounds() : BoundingBox{};
     description.surface_groups.assign(mesh.surface_group_names.size(), {});
     for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g) {
         const std::optional<int> id = group_face(mesh.surface_group_names[g], tubes);

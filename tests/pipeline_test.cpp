@@ -300,7 +300,9 @@ TEST(Pipeline, SlidSurfaceNodesStayInTheirFlatFaces) {
     for (index_t v = 0; v < static_cast<index_t>(group.size()); ++v) {
         if (group[v] == kNoIndex) continue;
         ++surface;
-        if (edge[v]) EXPECT_TRUE(same(v)) << "a node on a CAD edge moved";
+        if (edge[v]) {
+            EXPECT_TRUE(same(v)) << "a node on a CAD edge moved";
+        }
         moved += !same(v);
     }
     EXPECT_GT(moved, surface / 4) << "most nodes inside the block's flat faces should find a better place";

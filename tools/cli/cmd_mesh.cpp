@@ -29,6 +29,7 @@
 #include "tools/cli/option_checks.hpp"
 #include "tools/cli/progress_line.hpp"
 #include "tools/run/assembly_report.hpp"
+#include "tools/run/process_memory.hpp"
 #include "tools/run/html_report.hpp"
 #include "tools/run/mesh_report.hpp"
 #include "tools/run/mesh_settings.hpp"
@@ -106,7 +107,11 @@ MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
                                .axial_aspect = a.axial_option->count() > 0,
                                .chordal = a.chordal_option->count() > 0});
     MeshOptions o = run::mesh_options(s, run::Naming::Flags);
-    o.progress = progress.callback();
+    // A phase's end is where its temporaries are gone: hand their pages back before the next.
+    o.progress = [line = progress.callback()](const ProgressEvent& e) {
+        if (e.total > 0 && e.done >= e.total) run::return_free_memory();
+        line(e);
+    };
     return o;
 }
 

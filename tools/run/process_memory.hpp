@@ -9,4 +9,9 @@ namespace tubemesh::run {
 // For a program's main, before any work: the whole process is affected.
 void return_large_blocks_when_freed();
 
+// Gives the free pages inside the allocator's heaps back to the system: after a phase that
+// freed many small blocks from several threads (the tet step's plans, stars and scratch), so
+// that the next phase's peak does not stand on them. A few milliseconds.
+void return_free_memory();
+
 }  // namespace tubemesh::run

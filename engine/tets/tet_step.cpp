@@ -79,20 +79,19 @@ void mark_sliding_points(const HybridMesh& mesh, std::span<const index_t> front,
     dom.slide_rank.assign(dom.front_points, kNoIndex);
     dom.slide_normal.clear();
     dom.slide_offset.clear();
-    const auto at = [&](index_t v) { return mesh.point(v); };
     for (std::size_t i = 0, j = 0; i < fans.size(); i = j) {
         const index_t p = fans[i].first;
         while (j < fans.size() && fans[j].first == p) ++j;
         const index_t node = to_mesh[p];
         // All the node's front triangles are its boundary triangles, of one group.
         if (group[node] == kNoIndex || group[node] == kMixed || surface_count[node] != front_count[node]) continue;
-        const Vec3 here = at(node);
+        const Vec3 here = mesh.point(node);
         Vec3 sum{0, 0, 0};
         double longest = 0;
         for (std::size_t k = i; k < j; ++k) {
             const index_t* f = front.data() + 3 * std::size_t{fans[k].second};
-            sum = sum + cross(at(f[1]) - at(f[0]), at(f[2]) - at(f[0]));
-            for (int c = 0; c < 3; ++c) longest = std::max(longest, norm(at(f[c]) - here));
+            sum = sum + cross(mesh.point(f[1]) - mesh.point(f[0]), mesh.point(f[2]) - mesh.point(f[0]));
+            for (int c = 0; c < 3; ++c) longest = std::max(longest, norm(mesh.point(f[c]) - here));
         }
         const double len = norm(sum);
         if (!(len > 0)) continue;
@@ -101,7 +100,7 @@ void mark_sliding_points(const HybridMesh& mesh, std::span<const index_t> front,
         bool flat = true;
         for (std::size_t k = i; k < j && flat; ++k)
             for (int c = 0; c < 3; ++c)
-                if (std::abs(dot(at(front[3 * std::size_t{fans[k].second} + c]) - here, normal)) > 1e-9 * longest)
+                if (std::abs(dot(mesh.point(front[3 * std::size_t{fans[k].second} + c]) - here, normal)) > 1e-9 * longest)
                     flat = false;
         if (!flat) continue;
         dom.slide_rank[p] = static_cast<index_t>(dom.slide_normal.size());

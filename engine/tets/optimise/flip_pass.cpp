@@ -49,6 +49,9 @@ public:
         return p;
     }
     std::span<const index_t> old_tets() const { return {ids_.get(), old_count_}; }
+    // The new tets' point ids, 4 per tet.
+    std::span<const index_t> new_points() const { return {ids_.get() + old_count_, 4 * std::size_t{new_count_}}; }
+    FlipKind kind() const { return kind_; }
 
 private:
     std::unique_ptr<index_t[]> ids_;
@@ -316,11 +319,10 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
             }
         });
         for (std::size_t k : taken) {
-            const FlipPlan plan = cands[k].plan.load();
-            for (int j = 0; j < plan.old_count; ++j) written[plan.old_tets[j]] = stamp;
-            for (int j = 0; j < plan.new_count; ++j)
-                for (index_t p : plan.new_tets[j]) changed[p] = 1;
-            switch (plan.kind) {
+            const StoredPlan& plan = cands[k].plan;
+            for (index_t t : plan.old_tets()) written[t] = stamp;
+            for (index_t p : plan.new_points()) changed[p] = 1;
+            switch (plan.kind()) {
                 case FlipKind::Flip23: ++counts.flips23; break;
                 case FlipKind::Flip32: ++counts.flips32; break;
                 case FlipKind::Flip44: ++counts.flips44; break;

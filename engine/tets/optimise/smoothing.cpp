@@ -215,8 +215,9 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     Vec3 best_x = here;
     bool improved = false;
     // A pyramid apex keeps every pyramid it tops at apex_floor or better.
+    const bool apex = dom.is_apex(p);
     const auto allowed = [&](const Vec3& x) {
-        if (!dom.is_apex(p)) return true;
+        if (!apex) return true;
         const index_t k = dom.apex_rank[p];
         for (index_t b = dom.apex_at[k]; b < dom.apex_at[k + 1]; ++b) {
             const auto& q = dom.apex_bases[b];

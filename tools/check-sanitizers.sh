@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds and runs the fast tests under AddressSanitizer + UBSan, and the parallel kernels'
-# tests (Delaunay, tet step, sweep, pyramids) under ThreadSanitizer:
+# Builds and runs the fast tests under AddressSanitizer + UBSan (the sanitize preset: clang, the
+# build the fuzz harnesses share), and the parallel kernels' tests (Delaunay, tet step, sweep,
+# pyramids) under ThreadSanitizer:
 #   tools/check-sanitizers.sh [asan|tsan|all]   (default all; CI runs asan)
 # Any sanitizer report fails the run (exit 1). The asan part is clean; the tsan part is not yet:
 # Debian's oneTBB is not instrumented, so TSan also reports the hand-offs inside its scheduler
@@ -19,30 +20,30 @@ asan_tests=(test_mesh_store test_quality test_sweep test_mesh_check test_mesh_io
 # the sweep (its determinism tests run it on several threads), the pyramid batches.
 tsan_tests=(test_delaunay test_tets_refine test_tets_relaxation test_tets_recovery test_sweep test_pyramids)
 
-run_suite() {  # preset, tests...
+run_one() {  # preset, test: one suite, its output kept in a log
+  local log=build/$1/sanitizer-$2.txt
+  if build/"$1"/tests/"$2" --gtest_brief=1 >"$log" 2>&1; then
+    echo "$1 $2: clean"
+  else
+    echo "$1 $2: FAILED, see $log" >&2
+    return 1
+  fi
+}
+export -f run_one
+
+run_suite() {  # preset, tests...: built (a no-op when tools/test.sh built them), then run on every core
   local preset=$1
   shift
   [[ -f build/$preset/build.ninja ]] || cmake --preset "$preset" >/dev/null
   cmake --build --preset "$preset" -j "$(nproc)" --target "$@" >/dev/null
-  local failed=0
-  for t in "$@"; do
-    local log=build/$preset/sanitizer-$t.txt
-    local t0=$SECONDS
-    if build/"$preset"/tests/"$t" --gtest_brief=1 >"$log" 2>&1; then
-      echo "$preset $t: clean ($((SECONDS - t0)) s)"
-    else
-      echo "$preset $t: FAILED ($((SECONDS - t0)) s), see $log" >&2
-      failed=1
-    fi
-  done
-  return $failed
+  printf '%s\n' "$@" | xargs -P "$(nproc)" -I{} bash -c 'run_one "$0" "$1"' "$preset" {}
 }
 
 status=0
 if [[ $which == asan || $which == all ]]; then
   # halt_on_error: the first report fails the suite; UBSan reports are errors too.
   ASAN_OPTIONS=detect_leaks=1:halt_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-    run_suite asan "${asan_tests[@]}" || status=1
+    run_suite sanitize "${asan_tests[@]}" || status=1
 fi
 if [[ $which == tsan || $which == all ]]; then
   TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tools/tsan-suppressions.txt" \

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer harnesses (clang, ASan + UBSan; the fuzz preset) and runs each one:
+# Builds the libFuzzer harnesses (clang, ASan + UBSan; the sanitize preset) and runs each one:
 #   tools/fuzz.sh [SECONDS] [HARNESS...]        explore for SECONDS each (default 60)
 #   tools/fuzz.sh --runs N [HARNESS...]         N inputs each from seed 1: the same inputs every
 #                                               time, so a CI failure is a real, replayable finding
 # Harnesses: msh_reader, block_spec, batch_manifest. The committed seed corpus (fuzz/corpus/NAME) is read, never
-# written: new inputs go to build/fuzz/corpus-NAME, findings to build/fuzz/findings-NAME.
+# written: new inputs go to build/sanitize/corpus-NAME, findings to build/sanitize/findings-NAME.
 # Exit 1 on any finding.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,23 +19,23 @@ harnesses=("$@")
 [[ ${#harnesses[@]} -gt 0 ]] || harnesses=(msh_reader block_spec batch_manifest)
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ is missing (tools/setup.sh installs it)" >&2; exit 2; }
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
-[[ -f build/fuzz/build.ninja ]] || cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "$(nproc)" >/dev/null
+[[ -f build/sanitize/build.ninja ]] || cmake --preset sanitize >/dev/null
+cmake --build --preset sanitize -j "$(nproc)" --target "${harnesses[@]/#/fuzz_}" >/dev/null
 status=0
 for h in "${harnesses[@]}"; do
-  seeds=fuzz/corpus/$h work=build/fuzz/corpus-$h findings=build/fuzz/findings-$h
+  seeds=fuzz/corpus/$h work=build/sanitize/corpus-$h findings=build/sanitize/findings-$h
   [[ -d $seeds ]] || { echo "fuzz.sh: no seed corpus $seeds" >&2; exit 2; }
   # A deterministic run starts from the committed seeds alone, not from what earlier runs kept.
-  if [[ ${budget[0]} == -runs=* ]]; then work=build/fuzz/replay-$h; rm -rf "$work"; fi
+  if [[ ${budget[0]} == -runs=* ]]; then work=build/sanitize/replay-$h; rm -rf "$work"; fi
   mkdir -p "$work" "$findings"
   echo "fuzz $h: ${budget[*]}"
   # -timeout: an input that takes more than 10 s is a finding too (a reader must not hang).
-  if ! build/fuzz/fuzz/fuzz_"$h" "$work" "$seeds" "${budget[@]}" -timeout=10 \
-       -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 2>build/fuzz/log-"$h".txt; then
+  if ! build/sanitize/fuzz/fuzz_"$h" "$work" "$seeds" "${budget[@]}" -timeout=10 \
+       -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 2>build/sanitize/log-"$h".txt; then
     status=1
-    echo "fuzz $h: FINDING (log build/fuzz/log-$h.txt, input in $findings/)" >&2
-    tail -n 30 build/fuzz/log-"$h".txt >&2
+    echo "fuzz $h: FINDING (log build/sanitize/log-$h.txt, input in $findings/)" >&2
+    tail -n 30 build/sanitize/log-"$h".txt >&2
   fi
-  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" build/fuzz/log-"$h".txt | sed "s/^/  /" || true
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" build/sanitize/log-"$h".txt | sed "s/^/  /" || true
 done
 exit $status

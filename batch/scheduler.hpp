@@ -3,9 +3,9 @@
 // keeps the catalogue: the one scheduling loop every mode shares, so every mode meshes the
 // same blocks with the same options and records them alike.
 //
-// Order: the plan (batch/plan.hpp, made by the caller), then, when blocks outnumber the executor's slots, one
-// estimate per block whose estimate is not in the catalogue yet, then the blocks largest
-// first. A block whose worker dies (signal, lost process) is dealt again once; a second death,
+// Order: the plan (batch/plan.hpp, made by the caller), then, when blocks outnumber the
+// executor's slots, one estimate per block whose estimate is not in the catalogue yet, then the
+// blocks largest first. A block whose worker dies (signal, lost process) is dealt again once; a second death,
 // an error or the time limit marks it failed with its one-line error. The catalogue gets one
 // transaction per finished block, after the block's files are complete.
 #include <cstdint>

@@ -262,7 +262,8 @@ void AtomicFolder::commit() {
 
 std::string AtomicFolder::final_names(std::string text) const {
     const std::string from = staging_.string(), to = target_.string();
-    for (std::size_t at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
+    if (from.empty()) return text;
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
         text.replace(at, from.size(), to);
     return text;
 }

@@ -420,6 +420,7 @@ void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const 
         throw Error("cannot write '" + path.string() + "': cannot create the folder '" + dir.string() + "' for its blocks" +
                     (ec ? ": " + ec.message() : std::string(": a file of that name is in the way")));
     if (made) io::CommitGroup::folder_made(dir);
+    // What a killed run left there, and the .vtu files of an earlier .vtm this one does not list.
     io::remove_dead_temporaries(dir);
     std::vector<fs::path> earlier_parts;
     for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
@@ -427,7 +428,8 @@ void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const 
         const bool ours = std::any_of(parts.begin(), parts.end(), [&](const Part& part) {
             return fs::path(part.file).filename() == p.filename();
         });
-        if (!ours && p.extension() == ".vtu" && p.filename().native().front() != '.' && it->is_regular_file(ec))
+        std::error_code kind;
+        if (!ours && p.extension() == ".vtu" && p.filename().native().front() != '.' && it->is_regular_file(kind))
             earlier_parts.push_back(p);
     }
     try {

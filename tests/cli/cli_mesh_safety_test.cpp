@@ -81,11 +81,11 @@ TEST(CliMeshOptions, OutputsThatAreOneFileAreRefusedBeforeMeshing) {
     fs::create_directory(dir / "a");
     fs::create_directory(dir / "sub");
     const std::string vtm = (dir / "a.vtm").string(), part = (dir / "a" / "volume_tets.vtu").string();
+    const std::string inside = "cannot write '" + part + "': it is inside '" + (dir / "a").string() + "', where '" +
+                               vtm + "' writes its parts";
     const Option cases[] = {
-        {"-o " + q(vtm) + " -o " + q(part),
-         "cannot write '" + part + "': it is inside '" + (dir / "a").string() + "', where '" + vtm + "' writes its parts"},
-        {"-o " + q(part) + " -o " + q(vtm),
-         "cannot write '" + part + "': it is inside '" + (dir / "a").string() + "', where '" + vtm + "' writes its parts"},
+        {"-o " + q(vtm) + " -o " + q(part), inside},
+        {"-o " + q(part) + " -o " + q(vtm), inside},
         {"-o " + q(vtm) + " --html " + q(dir / "a" / "page.html"), "where '" + vtm + "' writes its parts"},
         {"-o " + q(dir / "b.msh") + " -o " + q(dir / "sub" / ".." / "b.msh"),
          "cannot write '" + (dir / "sub" / ".." / "b.msh").string() + "': it is the same file as '" +

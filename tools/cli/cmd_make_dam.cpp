@@ -129,7 +129,8 @@ Command add_make_dam_command(CLI::App& app) {
     cmd->add_option("--columns", a->dam.columns, "Columns along the dam's axis (default 3)")->check(CLI::Range(1, 1000));
     cmd->add_option("--lifts", a->dam.lifts, "Lifts per column (default 4)")->check(CLI::Range(1, 1000));
     cmd->add_option("--seed", a->dam.seed, "The same seed gives the same dam (default 1)");
-    cmd->add_option("-o,--output", a->outdir, "Folder for manifest.json and the blocks' files: new or empty, it appears whole or not at all");
+    cmd->add_option("-o,--output", a->outdir,
+                    "Folder for manifest.json and the blocks' files: new or empty; it appears whole or not at all");
     cmd->add_flag("--specs", a->specs, "Write a builder spec (JSON) per block instead of a STEP file");
     cmd->add_flag("--assembled", a->assembled,
                   "Also write DIR/section.step: the blocks glued into one assembly (solids block_C_L, faces "

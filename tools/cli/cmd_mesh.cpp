@@ -10,7 +10,8 @@
 // Safety: arguments, output formats and folders, and that no two outputs are one file (nor inside
 // a .vtm's parts folder), are checked before any work; the mesh passes the stage's check
 // (engine/pipeline/stage_check.hpp) before any file is written; each file is written to a
-// temporary name, and the names are renamed only once every file is complete. Any error: one line on stderr, exit 2, no output file, earlier files untouched.
+// temporary name, and the names are renamed only once every file is complete. Any error: one
+// line on stderr, exit 2, no output file, earlier files untouched.
 #include <fmt/format.h>
 
 #include <optional>

@@ -73,8 +73,9 @@ void check_distinct_outputs(const std::vector<std::string>& paths) {
                 throw Error("cannot write '" + paths[j] + "': it is inside '" + parts_folder(paths[i]).string() +
                             "', where '" + paths[i] + "' writes its parts; give it another folder");
             if (i < j && vtm_i && vtm_j && parts_folder(real[i]) == parts_folder(real[j]))
-                throw Error("cannot write '" + paths[j] + "': '" + paths[i] + "' writes its parts to the same folder '" +
-                            parts_folder(paths[i]).string() + "'; give one of them another name");
+                throw Error("cannot write '" + paths[j] + "': '" + paths[i] +
+                            "' writes its parts to the same folder '" + parts_folder(paths[i]).string() +
+                            "'; give one of them another name");
         }
 }
 

@@ -58,18 +58,15 @@ int run_batch_command(const BatchCommand& a, const MakeExecutor& make_executor) 
     Catalogue catalogue(catalogue_file);
 
     const std::vector<const BlockEntry*> blocks = shard_blocks(manifest, shard, shards);
-    std::size_t todo = 0;
-    for (const BlockEntry* b : blocks) {
-        const auto row = catalogue.get(b->id);
-        todo += !(row && done_and_intact(*row, *b, outdir));
-    }
-    ExecutorChoice choice = make_executor(todo);
+    // Once: the plan reads every done block's files through to check their SHA-256.
+    std::vector<PlannedBlock> todo = plan_run(catalogue, blocks, outdir);
+    ExecutorChoice choice = make_executor(todo.size());
 
     ProgressDisplay display(a.quiet, a.verbose);
     BatchRun run;
     run.outdir = outdir;
     run.progress = [&display](const BatchProgress& p) { display(p); };
-    const BatchSummary s = run_blocks(*choice.executor, catalogue, blocks, run);
+    const BatchSummary s = run_blocks(*choice.executor, catalogue, blocks.size(), std::move(todo), run);
     display.close();
 
     const std::vector<BlockRecord> rows = catalogue.all();

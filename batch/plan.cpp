@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "batch/sha256.hpp"
+#include "engine/core/types.hpp"
+
 namespace tubemesh::batch {
 
 namespace fs = std::filesystem;
@@ -13,13 +16,37 @@ std::vector<const BlockEntry*> shard_blocks(const Manifest& manifest, int shard,
     return out;
 }
 
+std::string changed_output(const BlockRecord& row, const fs::path& outdir) {
+    std::error_code ec;
+    for (const OutputFile& f : row.outputs) {
+        const fs::path path = outdir / f.path;
+        if (!fs::exists(path, ec)) return f.path + " is missing";
+        // The size first: a cheap answer for most changes, before the file is read through.
+        if (fs::file_size(path, ec) != f.bytes || ec) return f.path + " changed since it was written";
+        try {
+            if (sha256_file(path) != f.sha256) return f.path + " changed since it was written";
+        } catch (const Error& e) {
+            return e.what();
+        }
+    }
+    if (!fs::exists(outdir / row.report, ec)) return row.report + " is missing";
+    return {};
+}
+
 bool done_and_intact(const BlockRecord& row, const BlockEntry& block, const fs::path& outdir) {
     if (row.status != "done" || row.input_hash != block.input_hash || row.options_hash != block.options_hash)
         return false;
-    std::error_code ec;
-    for (const OutputFile& f : row.outputs)
-        if (fs::file_size(outdir / f.path, ec) != f.bytes || ec) return false;
-    return fs::exists(outdir / row.report, ec);
+    return changed_output(row, outdir).empty();
+}
+
+void recheck_done_rows(std::vector<BlockRecord>& rows, const fs::path& outdir) {
+    for (BlockRecord& r : rows) {
+        if (r.status != "done") continue;
+        std::string change = changed_output(r, outdir);
+        if (change.empty()) continue;
+        r.status = "pending";
+        r.error = std::move(change);
+    }
 }
 
 std::vector<PlannedBlock> plan_run(Catalogue& catalogue, const std::vector<const BlockEntry*>& blocks,

@@ -51,14 +51,13 @@ SlotPlan plan_slots(int threads, std::size_t blocks) {
     return {slots, std::max(1, threads / slots)};
 }
 
-BatchSummary run_blocks(Executor& executor, Catalogue& catalogue, const std::vector<const BlockEntry*>& blocks,
+BatchSummary run_blocks(Executor& executor, Catalogue& catalogue, std::size_t total, std::vector<PlannedBlock> todo,
                         const BatchRun& run) {
     const auto t0 = Clock::now();
-    std::vector<PlannedBlock> todo = plan_run(catalogue, blocks, run.outdir);
     fault_point("plan");
 
     BatchProgress progress;
-    progress.total = static_cast<int>(blocks.size());
+    progress.total = static_cast<int>(total);
     progress.skipped = progress.total - static_cast<int>(todo.size());
     auto emit = [&](BatchProgress::Event e, const BlockEntry* block = nullptr, const BlockRecord* record = nullptr) {
         if (!run.progress) return;

@@ -3,9 +3,9 @@
 // keeps the catalogue: the one scheduling loop every mode shares, so every mode meshes the
 // same blocks with the same options and records them alike.
 //
-// Order: plan (batch/plan.hpp), then, when blocks outnumber the executor's slots, one
-// estimate per block whose estimate is not in the catalogue yet, then the blocks largest
-// first. A block whose worker dies (signal, lost process) is dealt again once; a second death,
+// Order: the plan (batch/plan.hpp, made by the caller), then, when blocks outnumber the
+// executor's slots, one estimate per block whose estimate is not in the catalogue yet, then the
+// blocks largest first. A block whose worker dies (signal, lost process) is dealt again once; a second death,
 // an error or the time limit marks it failed with its one-line error. The catalogue gets one
 // transaction per finished block, after the block's files are complete.
 #include <cstdint>
@@ -16,6 +16,7 @@
 
 #include "batch/catalogue.hpp"
 #include "batch/manifest.hpp"
+#include "batch/plan.hpp"
 #include "batch/worker_pool.hpp"
 
 namespace tubemesh::batch {
@@ -79,7 +80,8 @@ struct BatchSummary {
     double seconds = 0;
 };
 
-BatchSummary run_blocks(Executor& executor, Catalogue& catalogue, const std::vector<const BlockEntry*>& blocks,
+// `todo`: what plan_run (batch/plan.hpp) left to mesh of `total` blocks.
+BatchSummary run_blocks(Executor& executor, Catalogue& catalogue, std::size_t total, std::vector<PlannedBlock> todo,
                         const BatchRun& run);
 
 }  // namespace tubemesh::batch

@@ -67,6 +67,8 @@ std::string status_text(const std::vector<BlockRecord>& rows) {
         line("hex condition number", w, w->hex_condition_max);
     for (const BlockRecord& r : rows)
         if (r.status == "failed") out += fmt::format("failed {}: {}\n", r.id, r.error);
+    for (const BlockRecord& r : rows)
+        if (r.status == "pending" && !r.error.empty()) out += fmt::format("to redo {}: {}\n", r.id, r.error);
     return out;
 }
 

@@ -2,11 +2,14 @@
 // the Abaqus face mapping. Outside readers (Gmsh, meshio) are in mesh_io_readers_test.cpp,
 // the corruption fuzzing in mesh_io_fuzz_test.cpp.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "engine/io/abaqus_faces.hpp"
 #include "engine/io/abaqus_names.hpp"
@@ -305,6 +308,62 @@ TEST_P(AtomicWrite, GroupRenamesEveryFileAtCommit) {
 INSTANTIATE_TEST_SUITE_P(Formats, AtomicWrite, ::testing::Values(".msh", ".vtu", ".inp"),
                          [](const auto& info) { return std::string(info.param + 1); });
 
+// A pid no process has: a child that has ended and been waited for.
+pid_t dead_pid() {
+    const pid_t child = fork();
+    if (child == 0) _exit(0);
+    waitpid(child, nullptr, 0);
+    return child;
+}
+
+// Writing a file removes the temporaries a killed writer of the same file left; those of a live
+// process (this one) and names that only look alike stay.
+TEST(AtomicTemporaries, ThoseOfDeadWritersOfTheTargetGo) {
+    TempDir dir;
+    const std::string dead = std::to_string(dead_pid()), live = std::to_string(getpid());
+    const std::vector<std::string> gone = {".m.msh.tmp-" + dead + "-0", ".m.msh.tmp-" + dead + "-17"};
+    const std::vector<std::string> kept = {
+        ".m.msh.tmp-" + live + "-0",   // a live writer's
+        ".n.msh.tmp-" + dead + "-0",   // another target's
+        "m.msh.tmp-" + dead + "-0",    // not hidden
+        ".m.msh.tmp-" + dead + "-",    // no counter
+        ".m.msh.tmp-x" + dead + "-0",  // no pid
+        ".m.msh.tmp-" + dead + "-0a",  // more after the counter
+        ".m.ms"};
+    for (const auto& names : {gone, kept})
+        for (const std::string& n : names) testing::write_text(dir / n, "x");
+    write_mesh(testing::conforming_patch(), dir / "m.msh");
+    for (const std::string& n : gone) EXPECT_FALSE(std::filesystem::exists(dir / n)) << n;
+    for (const std::string& n : kept) EXPECT_TRUE(std::filesystem::exists(dir / n)) << n;
+}
+
+// A folder written all at once: nothing under the target until commit(), nothing at all (not
+// even the parent folders it made) when destroyed before; a folder holding files is refused.
+TEST(AtomicFolder, AppearsWholeOrNotAtAll) {
+    TempDir dir;
+    const auto target = dir / "new" / "dam";
+    {
+        io::AtomicFolder folder(target);
+        testing::write_text(folder.path() / "a.txt", "a");
+        EXPECT_FALSE(std::filesystem::exists(target));
+        EXPECT_EQ(folder.final_names("cannot write '" + (folder.path() / "a.txt").string() + "'"),
+                  "cannot write '" + (target / "a.txt").string() + "'");
+    }
+    EXPECT_EQ(testing::entry_count(dir.path()), 0);
+    {
+        io::AtomicFolder folder(target);
+        testing::write_text(folder.path() / "a.txt", "a");
+        folder.commit();
+    }
+    EXPECT_EQ(testing::read_text(target / "a.txt"), "a");
+    EXPECT_EQ(testing::entry_count(dir / "new"), 1);
+    EXPECT_TRUE(contains(error_of([&] { io::AtomicFolder again(target); }), "it already holds files"));
+    std::filesystem::create_directory(dir / "empty");
+    io::AtomicFolder empty(dir / "empty");
+    empty.commit();
+    EXPECT_EQ(testing::entry_count(dir.path()), 2);
+}
+
 TEST(WriteMesh, UnknownExtensionIsAnError) {
     TempDir dir;
     const std::string message = error_of([&] { write_mesh(testing::conforming_patch(), dir / "mesh.stl"); });
@@ -374,6 +433,25 @@ TEST(VtmWriter, InAGroupItsFolderGoesWithItsFiles) {
     }
     EXPECT_EQ(testing::entry_count(dir.path()), 2);
     EXPECT_GT(testing::entry_count(dir / "m"), 3);
+}
+
+// A .vtm written over another model's: the folder keeps only the new parts (in a group, once it
+// commits), and files that are no .vtu part stay.
+TEST(VtmWriter, ReplacesTheEarlierModelsParts) {
+    TempDir dir;
+    write_vtm(testing::conforming_patch(), dir / "m.vtm");
+    const int parts = testing::entry_count(dir / "m");
+    testing::write_text(dir / "m" / "boundary_pipe_4.vtu", "an earlier model's part");
+    testing::write_text(dir / "m" / "notes.txt", "the user's");
+    {
+        io::CommitGroup group;
+        write_vtm(testing::conforming_patch(), dir / "m.vtm");
+        EXPECT_TRUE(std::filesystem::exists(dir / "m" / "boundary_pipe_4.vtu"));  // not committed yet
+        group.commit();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "m" / "boundary_pipe_4.vtu"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "m" / "notes.txt"));
+    EXPECT_EQ(testing::entry_count(dir / "m"), parts + 1);
 }
 
 // The multiblock names one block per region and per surface group; each file holds exactly

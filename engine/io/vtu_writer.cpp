@@ -22,6 +22,7 @@
 // unit and where each surface group is. (The kind is also the VTK cell type ParaView shows.)
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -408,14 +409,29 @@ void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const 
                          folder + "/boundary_" + io::file_part(mesh.surface_group_names[g]) + ".vtu", std::move(grid)});
     }
 
-    // The folder beside the .vtm; removed again if this call made it and fails.
+    // The folder beside the .vtm; removed again if this call made it and fails or is interrupted.
     const fs::path dir = path.parent_path() / folder;
+    // Tracked before it is made, so that an interrupt right after finds it (removed only if empty).
+    io::TrackedTemporary tracked_dir(dir, io::TemporaryKind::Folder);
     std::error_code ec;
     const bool made = fs::create_directory(dir, ec);
+    if (!made) tracked_dir.release();
     if (ec || !fs::is_directory(dir))
         throw Error("cannot write '" + path.string() + "': cannot create the folder '" + dir.string() + "' for its blocks" +
                     (ec ? ": " + ec.message() : std::string(": a file of that name is in the way")));
     if (made) io::CommitGroup::folder_made(dir);
+    // What a killed run left there, and the .vtu files of an earlier .vtm this one does not list.
+    io::remove_dead_temporaries(dir);
+    std::vector<fs::path> earlier_parts;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        const fs::path& p = it->path();
+        const bool ours = std::any_of(parts.begin(), parts.end(), [&](const Part& part) {
+            return fs::path(part.file).filename() == p.filename();
+        });
+        std::error_code kind;
+        if (!ours && p.extension() == ".vtu" && p.filename().native().front() != '.' && it->is_regular_file(kind))
+            earlier_parts.push_back(p);
+    }
     try {
         // Every block complete under a temporary name before any is renamed into place.
         std::vector<std::unique_ptr<io::AtomicFile>> files;
@@ -441,6 +457,9 @@ void write_vtm(const HybridMesh& mesh, const std::filesystem::path& path, const 
         index.write("  </vtkMultiBlockDataSet>\n</VTKFile>\n");
         for (auto& f : files) f->commit();
         index.commit();
+        // The folder holds this .vtm's parts only: an earlier model's other parts go once the
+        // new files are in place.
+        for (const fs::path& stale : earlier_parts) io::CommitGroup::retire(stale);
     } catch (...) {
         if (made) fs::remove_all(dir, ec);
         throw;

@@ -3,7 +3,9 @@
 #include <Interface_Static.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
+#include <StepData_Protocol.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepData_StepWriter.hxx>
 #include <StepRepr_Representation.hxx>
 #include <StepRepr_RepresentationItem.hxx>
 #include <StepShape_ShapeDefinitionRepresentation.hxx>
@@ -15,13 +17,12 @@
 #include <XSControl_TransferWriter.hxx>
 #include <XSControl_WorkSession.hxx>
 
-#include <unistd.h>
-
+#include <sstream>
 #include <string>
 #include <string_view>
 
 #include "engine/core/types.hpp"
-#include "engine/io/temporary_files.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "geom/model_occt.hpp"
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/step_write_occt.hpp"
@@ -88,9 +89,9 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
                       std::span<const NamedShape> names) {
     silence_occt_output();
     const StepUnit& unit = step_unit(length_unit);
-    std::filesystem::path tmp = path;
-    tmp += ".tmp-tubemesh-" + std::to_string(::getpid());  // two runs writing one target keep apart
-    const io::TrackedTemporary tracked(tmp);
+    // The text is made in memory and written by io::AtomicFile: OpenCASCADE's own file writing
+    // tells only that it failed, not why (a full disk, a missing folder).
+    std::ostringstream text;
     try {
         const XstepSession session;
         STEPControl_Writer writer;
@@ -105,23 +106,19 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
         if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
             throw Error("cannot write " + path.string() + ": OpenCASCADE could not translate the shape to STEP");
         name_items(writer, shape, names);
-        if (writer.Write(tmp.c_str()) != IFSelect_RetDone)
-            throw Error("cannot write " + path.string() + ": the directory is missing or not writable");
+        // What STEPControl_Writer::Write does, to a stream (StepSelect_WorkLibrary::WriteFile).
+        const Handle(StepData_Protocol) protocol = Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol());
+        if (protocol.IsNull()) throw Error("cannot write " + path.string() + ": OpenCASCADE has no STEP protocol");
+        StepData_StepWriter step(writer.Model());
+        step.SendModel(protocol);
+        if (!step.Print(text) || !text)
+            throw Error("cannot write " + path.string() + ": OpenCASCADE could not print the STEP text");
     } catch (const Standard_Failure& e) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
         throw Error("cannot write " + path.string() + ": OpenCASCADE failed with \"" + e.GetMessageString() + "\"");
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw;
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error("cannot write " + path.string() + ": " + ec.message());
-    }
+    io::AtomicFile file(path);
+    file.write(text.view());
+    file.commit();
 }
 
 void write_step(const Model& model, const std::filesystem::path& path) {

@@ -4,7 +4,10 @@
 // redone and unchanged ones kept; a corrupt, crashing or hanging block failing alone.
 // Faults come from TUBEMESH_BATCH_TEST_FAULT (batch/test_hooks.hpp): no test sleeps.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -43,6 +46,55 @@ TEST(CliMakeDam, SameSeedSameDamAndEveryBlockHasItsRole) {
     const json& l1 = m["blocks"][0]["info"];
     const json& l2 = m["blocks"][1]["info"];
     EXPECT_DOUBLE_EQ(l2["origin"][2].get<double>(), l1["origin"][2].get<double>() + l1["size"][2].get<double>());
+}
+
+// `make-dam ... -o DIR` as an argument list, for signal_when_created.
+std::vector<std::string> make_dam_args(const fs::path& dir) {
+    std::vector<std::string> args = {TUBEMESH_CLI, "make-dam", "--columns", "2", "--lifts", "2"};
+    std::istringstream ranges(kSmallDam);
+    for (std::string word; ranges >> word;) args.push_back(word);
+    args.insert(args.end(), {"-o", dir.string()});
+    return args;
+}
+
+// A disk that fills after the first blocks (a file-size limit between the pipeless blocks' STEP
+// files and those with a pipe): the system's reason, and no folder at all.
+TEST(CliMakeDam, AFullDiskGivesTheRealReasonAndLeavesNoFolder) {
+    TempDir tmp;
+    const ProcessResult r = run_command("prlimit --fsize=60000 " + cli() + " make-dam --columns 2 --lifts 2 " +
+                                        kSmallDam + " -o " + q(tmp / "dam"));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(fs::is_empty(tmp.path()));
+}
+
+// SIGTERM once the first block's file is complete: nothing is left, not even the folder.
+TEST(CliMakeDam, SigtermLeavesNoFolder) {
+    TempDir tmp;
+    const SignalledRun run = signal_when_created(make_dam_args(tmp / "dam"), tmp.path(), "c1-l1.step", SIGTERM);
+    ASSERT_TRUE(run.sent);
+    EXPECT_TRUE(WIFSIGNALED(run.status) && WTERMSIG(run.status) == SIGTERM) << "status " << run.status;
+    EXPECT_TRUE(fs::is_empty(tmp.path()));
+}
+
+// A folder that already holds files is refused before any block is built; an empty one is filled.
+TEST(CliMakeDam, WritesANewOrEmptyFolderOnly) {
+    TempDir tmp;
+    fs::create_directory(tmp / "full");
+    std::ofstream(tmp / "full" / "mine.txt") << "the user's\n";
+    const ProcessResult full = run_command(cli() + " make-dam --specs -o " + q(tmp / "full"));
+    EXPECT_EQ(full.exit_code, 2);
+    EXPECT_NE(full.err.find("it already holds files"), std::string::npos) << full.err;
+    EXPECT_EQ(read_text(tmp / "full" / "mine.txt"), "the user's\n");
+    EXPECT_EQ(std::distance(fs::directory_iterator(tmp / "full"), fs::directory_iterator()), 1);
+
+    fs::create_directory(tmp / "empty");
+    EXPECT_EQ(run_command(cli() + " make-dam --specs --quiet -o " + q(tmp / "empty")).exit_code, 0);
+    EXPECT_TRUE(fs::exists(tmp / "empty" / "manifest.json"));
+    EXPECT_EQ(run_command(cli() + " make-dam --specs --quiet -o " + q(tmp / "new" / "dam")).exit_code, 0);
+    EXPECT_TRUE(fs::exists(tmp / "new" / "dam" / "manifest.json"));
+    EXPECT_EQ(std::distance(fs::directory_iterator(tmp.path()), fs::directory_iterator()), 3);  // no temporaries
 }
 
 TEST(CliBatch, MeshesEveryBlockAndEveryMeshPassesTheCheckAndOpensInGmsh) {
@@ -144,6 +196,36 @@ TEST(CliBatch, AChangedBlockIsRedoneAndUnchangedOnesAreNot) {
         EXPECT_EQ(after[i].at("options_sha256") != before[i].at("options_sha256"), id == "c1-l2") << id;
     }
     EXPECT_TRUE(fs::exists(dam.dir / "out" / "c2-l1.msh"));
+}
+
+// A done block's mesh altered in place at the same size: --status no longer counts it as done,
+// and the next run redoes it (the catalogue holds the SHA-256 of what the worker wrote).
+TEST(CliBatch, AnOutputAlteredAtItsSizeIsRedone) {
+    const SmallDam dam;
+    ASSERT_EQ(batch(dam, "out", "").exit_code, 0);
+    const fs::path msh = dam.dir / "out" / "c2-l1.msh";
+    const std::string written = sha256_of(msh);
+    const auto size = fs::file_size(msh);
+    {
+        std::fstream f(msh, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(static_cast<std::streamoff>(size / 2));
+        const char c = static_cast<char>(f.get());
+        f.seekp(static_cast<std::streamoff>(size / 2));
+        f.put(static_cast<char>(~c));
+    }
+    ASSERT_EQ(fs::file_size(msh), size);
+    ASSERT_NE(sha256_of(msh), written);
+
+    const ProcessResult status = run_command(cli() + " batch --status " + q(dam.dir / "out"));
+    EXPECT_EQ(status.exit_code, 1);
+    EXPECT_NE(status.out.find("4 blocks: 3 done, 0 failed, 1 pending"), std::string::npos) << status.out;
+    EXPECT_NE(status.out.find("to redo c2-l1: c2-l1.msh changed since it was written"), std::string::npos)
+        << status.out;
+
+    const ProcessResult again = batch(dam, "out", "");
+    ASSERT_EQ(again.exit_code, 0) << again.out << again.err;
+    EXPECT_NE(again.out.find("3 done before, 1 meshed now"), std::string::npos) << again.out;
+    EXPECT_EQ(sha256_of(msh), written);
 }
 
 TEST(CliBatch, ACorruptBlockFailsAloneWithItsErrorAndExitOne) {

@@ -176,6 +176,19 @@ TEST(CliGeomErrors, OutputInAMissingDirectory) {
     EXPECT_EQ(entries(dir.path()), 0);
 }
 
+// A full disk (here a file-size limit below the STEP file's size) is named by the system's
+// reason, not guessed at, and leaves no file.
+TEST(CliGeomErrors, AFullDiskGivesTheRealReasonAndNoFile) {
+    TempDir dir;
+    const ProcessResult r = run_command("prlimit --fsize=4096 " + cli() + " make-block --preset straight-pipe -o " +
+                                        q(dir / "x.step"));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_TRUE(one_line(r.err)) << r.err;
+    EXPECT_NE(r.err.find("cannot write '" + (dir / "x.step").string() + "': File too large"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(entries(dir.path()), 0);
+}
+
 TEST(CliGeomErrors, MissingSpecFile) {
     TempDir dir;
     const ProcessResult r = tubemesh_cmd("make-block --spec " + q(dir / "none.json") + " -o " + q(dir / "x.step"));

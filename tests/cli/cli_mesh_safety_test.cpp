@@ -2,7 +2,6 @@
 // every file that existed before it intact; options are refused at parse time in plain numbers.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -74,6 +73,37 @@ TEST(CliMeshOptions, TooManyNodesAroundNamesCirc) {
     EXPECT_EQ(r.err.find("default: default:"), std::string::npos) << r.err;
 }
 
+// Outputs that would be one file are refused before any work, with both names on one line:
+// the same file twice, a file in the folder of a .vtm's parts (which existed from an earlier run),
+// two .vtm files sharing that folder.
+TEST(CliMeshOptions, OutputsThatAreOneFileAreRefusedBeforeMeshing) {
+    TempDir dir;
+    fs::create_directory(dir / "a");
+    fs::create_directory(dir / "sub");
+    const std::string vtm = (dir / "a.vtm").string(), part = (dir / "a" / "volume_tets.vtu").string();
+    const std::string inside = "cannot write '" + part + "': it is inside '" + (dir / "a").string() + "', where '" +
+                               vtm + "' writes its parts";
+    const Option cases[] = {
+        {"-o " + q(vtm) + " -o " + q(part), inside},
+        {"-o " + q(part) + " -o " + q(vtm), inside},
+        {"-o " + q(vtm) + " --html " + q(dir / "a" / "page.html"), "where '" + vtm + "' writes its parts"},
+        {"-o " + q(dir / "b.msh") + " -o " + q(dir / "sub" / ".." / "b.msh"),
+         "cannot write '" + (dir / "sub" / ".." / "b.msh").string() + "': it is the same file as '" +
+             (dir / "b.msh").string() + "'"},
+        {"-o " + q(vtm) + " -o " + q(dir / "a.VTM"),
+         "cannot write '" + (dir / "a.VTM").string() + "': '" + vtm + "' writes its parts to the same folder"},
+    };
+    for (const Option& c : cases) {
+        const auto r = run_command(cli() + " mesh " + c.args);
+        EXPECT_EQ(r.exit_code, 2) << c.args;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_TRUE(r.out.empty()) << c.args << ": " << r.out;
+    }
+    EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"a", "sub"}));
+    EXPECT_TRUE(fs::is_empty(dir / "a"));
+}
+
 // Hexes past the analysis limit are not silent: the warning names the layers as the cause.
 TEST(CliMeshOptions, ManyLayersWarnOfThinHexes) {
     TempDir dir;
@@ -124,34 +154,13 @@ void interrupt_while_writing(const fs::path& dir, int signal_number) {
     std::ofstream(dir / "y.vtu") << earlier;
     const std::vector<std::string> before = names_in(dir);
 
-    const int watch = inotify_init1(IN_CLOEXEC);
-    ASSERT_GE(watch, 0);
-    ASSERT_GE(inotify_add_watch(watch, dir.c_str(), IN_CREATE), 0);
-    const std::string x = (dir / "x.msh").string(), y = (dir / "y.vtu").string(), z = (dir / "z.inp").string();
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-        // The dam block (no input): big enough that writing three files takes a while.
-        execl(TUBEMESH_CLI, TUBEMESH_CLI, "mesh", "--quiet", "-o", x.c_str(), "-o", y.c_str(), "-o", z.c_str(),
-              static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    bool sent = false;
-    alignas(inotify_event) char buffer[4096];
-    while (!sent) {
-        const ssize_t n = read(watch, buffer, sizeof buffer);
-        if (n <= 0) break;
-        for (char* p = buffer; p < buffer + n && !sent;) {
-            const auto* e = reinterpret_cast<const inotify_event*>(p);
-            if (e->len > 0 && std::string(e->name).rfind(".x.msh.tmp-", 0) == 0) sent = kill(child, signal_number) == 0;
-            p += sizeof(inotify_event) + e->len;
-        }
-    }
-    close(watch);
-    int status = 0;
-    ASSERT_EQ(waitpid(child, &status, 0), child);
-    ASSERT_TRUE(sent);
-    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << "status " << status;
+    // The dam block (no input): big enough that writing three files takes a while.
+    const auto run = tubemesh::testing::signal_when_created(
+        {TUBEMESH_CLI, "mesh", "--quiet", "-o", (dir / "x.msh").string(), "-o", (dir / "y.vtu").string(), "-o",
+         (dir / "z.inp").string()},
+        dir, ".x.msh.tmp-", signal_number);
+    ASSERT_TRUE(run.sent);
+    EXPECT_TRUE(WIFSIGNALED(run.status) && WTERMSIG(run.status) == signal_number) << "status " << run.status;
     EXPECT_EQ(names_in(dir), before);
     EXPECT_EQ(read_file(dir / "y.vtu"), earlier);
 }
@@ -164,6 +173,76 @@ TEST_F(CliMeshSafety, OutOfMemoryEndsWithAMessage) {
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(r.err.rfind("tubemesh: out of memory: the run needed more than the 0.156 GiB", 0), 0u) << r.err;
     EXPECT_TRUE(names_in(dir.path()).empty());
+}
+
+// The hidden temporaries in `dir`.
+std::vector<std::string> temporaries_in(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const std::string& n : names_in(dir))
+        if (n.find(".tmp-") != std::string::npos) names.push_back(n);
+    return names;
+}
+
+// kill -9 while the outputs are written leaves their temporaries; the next run writing those
+// files removes them, but not the temporary of a live process (this test's, standing for a
+// concurrent run).
+TEST_F(CliMeshSafety, TemporariesOfAKilledRunGoWithTheNextRun) {
+    const auto killed = tubemesh::testing::signal_when_created(
+        {TUBEMESH_CLI, "mesh", "--quiet", "-o", (dir / "x.msh").string(), "-o", (dir / "y.vtu").string()}, dir.path(),
+        ".y.vtu.tmp-", SIGKILL);
+    ASSERT_TRUE(killed.sent);
+    ASSERT_TRUE(WIFSIGNALED(killed.status) && WTERMSIG(killed.status) == SIGKILL) << killed.status;
+    ASSERT_EQ(temporaries_in(dir.path()).size(), 2u);
+    const std::string live = ".x.msh.tmp-" + std::to_string(getpid()) + "-0";
+    std::ofstream(dir / live) << "a concurrent run's file\n";
+
+    const auto r = run_command(cli() + " mesh " + q(pipe()) + " --quiet -o " + q(dir / "x.msh") + " -o " +
+                               q(dir / "y.vtu"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(temporaries_in(dir.path()), std::vector<std::string>{live});
+}
+
+// An interrupt while a .vtm's parts are written leaves no folder for them.
+TEST_F(CliMeshSafety, SigtermWhileWritingAVtmLeavesNoFolder) {
+    const auto run = tubemesh::testing::signal_when_created(
+        {TUBEMESH_CLI, "mesh", "--quiet", "-o", (dir / "w.vtm").string(), "-o", (dir / "x.msh").string()}, dir.path(),
+        "w", SIGTERM);
+    ASSERT_TRUE(run.sent);
+    EXPECT_TRUE(WIFSIGNALED(run.status) && WTERMSIG(run.status) == SIGTERM) << "status " << run.status;
+    EXPECT_TRUE(names_in(dir.path()).empty()) << names_in(dir.path()).front();
+}
+
+// The files a .vtm lists (file="..." attributes), sorted.
+std::vector<std::string> listed_parts(const fs::path& vtm) {
+    const std::string text = read_file(vtm);
+    std::vector<std::string> files;
+    for (std::size_t at = text.find("file=\""); at != std::string::npos; at = text.find("file=\"", at)) {
+        at += 6;
+        files.push_back(text.substr(at, text.find('"', at) - at));
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// A second model meshed into the same .vtm: its folder then holds the new model's parts only
+// (the first one's extra pipes are gone), and a file of the user's that is no part stays.
+TEST_F(CliMeshSafety, AVtmFolderHoldsOnlyThisRunsParts) {
+    const fs::path three = tubemesh::testing::built_preset(dir.path(), "three-pipes");
+    const fs::path out = dir / "out";
+    fs::create_directory(out);
+    const auto first = run_command(cli() + " mesh " + q(three) + " --quiet -o " + q(out / "x.vtm"));
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    ASSERT_TRUE(fs::exists(out / "x" / "boundary_pipe_3.vtu"));
+    std::ofstream(out / "x" / "notes.txt") << "the user's\n";
+
+    const auto second = run_command(cli() + " mesh " + q(pipe()) + " --quiet -o " + q(out / "x.vtm"));
+    ASSERT_EQ(second.exit_code, 0) << second.err;
+    std::vector<std::string> expected;
+    for (const std::string& f : listed_parts(out / "x.vtm")) expected.push_back(fs::path(f).filename().string());
+    expected.push_back("notes.txt");
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(names_in(out / "x"), expected);
+    EXPECT_FALSE(fs::exists(out / "x" / "boundary_pipe_2.vtu"));
 }
 
 TEST_F(CliMeshSafety, SigtermWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGTERM); }

@@ -1,5 +1,9 @@
 #include "tests/support/process.hpp"
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/inotify.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -59,6 +63,48 @@ ProcessResult run_command(const std::string& command_line) {
     r.out = slurp(out);
     r.err = slurp(err);
     return r;
+}
+
+SignalledRun signal_when_created(const std::vector<std::string>& argv, const fs::path& dir, const std::string& prefix,
+                                 int signal_number) {
+    constexpr uint32_t kEvents = IN_CREATE | IN_MOVED_TO;
+    const int watch = inotify_init1(IN_CLOEXEC);
+    const int top = watch < 0 ? -1 : inotify_add_watch(watch, dir.c_str(), kEvents);
+    if (top < 0) throw std::runtime_error("inotify failed");
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const pid_t child = fork();
+    if (child < 0) throw std::runtime_error("fork failed");
+    if (child == 0) {
+        execv(args[0], args.data());
+        _exit(127);
+    }
+    // The child's end wakes the poll too, so a run that never makes the entry does not hang it.
+    const int ended = static_cast<int>(syscall(SYS_pidfd_open, child, 0));
+    SignalledRun run;
+    alignas(inotify_event) char buffer[4096];
+    while (!run.sent) {
+        pollfd fds[2] = {{watch, POLLIN, 0}, {ended, POLLIN, 0}};
+        if (poll(fds, ended >= 0 ? 2 : 1, -1) < 0) break;
+        if (!(fds[0].revents & POLLIN)) break;  // the child ended
+        const ssize_t n = read(watch, buffer, sizeof buffer);
+        if (n <= 0) break;
+        for (char* p = buffer; p < buffer + n && !run.sent;) {
+            const auto* e = reinterpret_cast<const inotify_event*>(p);
+            const std::string name = e->len > 0 ? e->name : "";
+            if (name.rfind(prefix, 0) == 0) {
+                run.sent = kill(child, signal_number) == 0;
+            } else if (e->wd == top && (e->mask & IN_ISDIR) && (e->mask & IN_CREATE)) {
+                inotify_add_watch(watch, (dir / name).c_str(), kEvents);
+            }
+            p += sizeof(inotify_event) + e->len;
+        }
+    }
+    close(watch);
+    if (ended >= 0) close(ended);
+    waitpid(child, &run.status, 0);
+    return run;
 }
 
 }  // namespace tubemesh::testing

@@ -16,6 +16,7 @@
 
 #include "batch/batch_command.hpp"
 #include "batch/catalogue.hpp"
+#include "batch/plan.hpp"
 #include "batch/run_lock.hpp"
 #include "batch/status.hpp"
 #include "batch/status_html.hpp"
@@ -48,6 +49,7 @@ std::vector<batch::BlockRecord> rows_of(const fs::path& outdir) {
         for (batch::BlockRecord& r : c.all()) rows.push_back(std::move(r));
     }
     std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.position < b.position; });
+    batch::recheck_done_rows(rows, outdir);  // what the next run would redo is not done
     return rows;
 }
 

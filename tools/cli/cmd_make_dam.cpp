@@ -1,13 +1,14 @@
 // `tubemesh make-dam [--columns C] [--lifts L] [--seed N] -o DIR [--specs] [ranges] [--size S]
 // [--sweep-size St] [--formats LIST]`: a parametric dam (geom/builders/dam.hpp) as a batch:
 // DIR/manifest.json (batch/manifest.hpp) and one STEP file per block, or with --specs one
-// builder spec (JSON) per block. The same arguments give the same files.
+// builder spec (JSON) per block. The same arguments give the same files. DIR is new (or empty) and
+// appears whole or not at all (io::AtomicFolder).
 #include <fmt/format.h>
 
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "engine/core/types.hpp"
@@ -73,6 +74,53 @@ nlohmann::json block_info(const geom::DamBlock& b) {
     return info;
 }
 
+// What the folder got, for the summary lines.
+struct DamWritten {
+    int pipes = 0;
+    std::size_t section_solids = 0, shared_faces = 0;  // 0 solids: no section
+};
+
+// The blocks' files, the manifest and the section (if asked for) into `dir`.
+DamWritten write_dam(const MakeDamArgs& a, const std::vector<geom::DamBlock>& blocks, const fs::path& dir) {
+    DamWritten written;
+    // Built and glued first (a section that does not glue fails before the blocks are built),
+    // written last: OpenCASCADE numbers the products it writes, so the order shapes the bytes.
+    std::optional<geom::Assembly> section;
+    if (a.assembled) section = geom::build_dam_section(blocks);
+    nlohmann::json defaults = nlohmann::json::object();
+    if (a.size > 0) defaults["size"] = a.size;
+    if (a.sweep_size > 0) defaults["sweep_size"] = a.sweep_size;
+    if (!a.formats.empty()) defaults["formats"] = a.formats;
+    nlohmann::json entries = nlohmann::json::array();
+    for (const geom::DamBlock& b : blocks) {
+        nlohmann::json e = {{"id", b.id}};
+        if (a.specs) {
+            const std::string name = b.id + ".json";
+            write_text(dir / name, geom::block_spec_json(b.spec) + "\n");
+            e["spec"] = name;
+        } else {
+            const std::string name = b.id + ".step";
+            geom::write_step(geom::build_block(b.spec).model, dir / name);
+            e["cad"] = name;
+        }
+        e["info"] = block_info(b);
+        entries.push_back(std::move(e));
+        written.pipes += !b.spec.pipes.empty();
+    }
+    const nlohmann::json manifest = {
+        {"tubemesh_batch", 1},
+        {"name", fmt::format("dam seed {} ({} x {})", a.dam.seed, a.dam.columns, a.dam.lifts)},
+        {"defaults", defaults},
+        {"blocks", entries}};
+    write_text(dir / "manifest.json", manifest.dump(2) + "\n");
+    if (section) {
+        geom::write_assembly_step(*section, dir / "section.step");
+        written.section_solids = section->solids().size();
+        written.shared_faces = section->shared_faces().size();
+    }
+    return written;
+}
+
 }  // namespace
 
 Command add_make_dam_command(CLI::App& app) {
@@ -81,7 +129,8 @@ Command add_make_dam_command(CLI::App& app) {
     cmd->add_option("--columns", a->dam.columns, "Columns along the dam's axis (default 3)")->check(CLI::Range(1, 1000));
     cmd->add_option("--lifts", a->dam.lifts, "Lifts per column (default 4)")->check(CLI::Range(1, 1000));
     cmd->add_option("--seed", a->dam.seed, "The same seed gives the same dam (default 1)");
-    cmd->add_option("-o,--output", a->outdir, "Folder for manifest.json and the blocks' files (created)");
+    cmd->add_option("-o,--output", a->outdir,
+                    "Folder for manifest.json and the blocks' files: new or empty; it appears whole or not at all");
     cmd->add_flag("--specs", a->specs, "Write a builder spec (JSON) per block instead of a STEP file");
     cmd->add_flag("--assembled", a->assembled,
                   "Also write DIR/section.step: the blocks glued into one assembly (solids block_C_L, faces "
@@ -112,49 +161,24 @@ Command add_make_dam_command(CLI::App& app) {
         if (a->outdir.empty()) throw Error("make-dam needs -o DIR");
         if (a->assembled) a->dam.pipeless_ends = false;
         const std::vector<geom::DamBlock> blocks = geom::dam_blocks(a->dam);  // Error -> exit 2
-        // Built and glued first: a section that does not glue leaves no file.
-        std::optional<geom::Assembly> section;
-        if (a->assembled) section = geom::build_dam_section(blocks);
-        const fs::path dir = a->outdir;
-        std::error_code ec;
-        fs::create_directories(dir, ec);
-        if (!fs::is_directory(dir)) throw Error("cannot create the folder '" + dir.string() + "'");
-
-        nlohmann::json defaults = nlohmann::json::object();
-        if (a->size > 0) defaults["size"] = a->size;
-        if (a->sweep_size > 0) defaults["sweep_size"] = a->sweep_size;
-        if (!a->formats.empty()) defaults["formats"] = a->formats;
-        nlohmann::json entries = nlohmann::json::array();
-        int pipes = 0;
-        for (const geom::DamBlock& b : blocks) {
-            nlohmann::json e = {{"id", b.id}};
-            if (a->specs) {
-                const std::string name = b.id + ".json";
-                write_text(dir / name, geom::block_spec_json(b.spec) + "\n");
-                e["spec"] = name;
-            } else {
-                const std::string name = b.id + ".step";
-                geom::write_step(geom::build_block(b.spec).model, dir / name);
-                e["cad"] = name;
-            }
-            e["info"] = block_info(b);
-            entries.push_back(std::move(e));
-            pipes += !b.spec.pipes.empty();
+        // All or nothing: the files go to a hidden sibling of the folder, renamed at the end, so
+        // an error (a section that does not glue, a full disk) or an interrupt leaves no file.
+        io::AtomicFolder folder(a->outdir);
+        DamWritten written;
+        try {
+            written = write_dam(*a, blocks, folder.path());
+        } catch (const Error& e) {
+            throw Error(folder.final_names(e.what()));
         }
-        const nlohmann::json manifest = {
-            {"tubemesh_batch", 1},
-            {"name", fmt::format("dam seed {} ({} x {})", a->dam.seed, a->dam.columns, a->dam.lifts)},
-            {"defaults", defaults},
-            {"blocks", entries}};
-        write_text(dir / "manifest.json", manifest.dump(2) + "\n");
-        if (section) geom::write_assembly_step(*section, dir / "section.step");
+        folder.commit();
+        const fs::path dir = a->outdir;
         if (!a->quiet)
             fmt::print("wrote {}: {} blocks ({} columns x {} lifts, {} with a cooling pipe), {}\n",
-                       (dir / "manifest.json").string(), blocks.size(), a->dam.columns, a->dam.lifts, pipes,
+                       (dir / "manifest.json").string(), blocks.size(), a->dam.columns, a->dam.lifts, written.pipes,
                        a->specs ? "one builder spec each" : "one STEP file each");
-        if (section && !a->quiet)
+        if (written.section_solids > 0 && !a->quiet)
             fmt::print("wrote {}: the {} blocks as one assembly, {} shared faces\n", (dir / "section.step").string(),
-                       section->solids().size(), section->shared_faces().size());
+                       written.section_solids, written.shared_faces);
         return 0;
     }};
 }

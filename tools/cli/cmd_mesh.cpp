@@ -7,10 +7,11 @@
 // to every OUT (format by extension: .msh, .vtu, .vtm, .inp), the report as JSON and as an HTML
 // page. The options and their defaults are run::MeshSettings, shared with the Python module.
 //
-// Safety: arguments, output formats and output folders are checked before any work; the mesh
-// passes the stage's check (engine/pipeline/stage_check.hpp) before any file is written; each
-// file is written to a temporary name, and the names are renamed only once every file is
-// complete. Any error: one line on stderr, exit 2, no output file, earlier files untouched.
+// Safety: arguments, output formats and folders, and that no two outputs are one file (nor inside
+// a .vtm's parts folder), are checked before any work; the mesh passes the stage's check
+// (engine/pipeline/stage_check.hpp) before any file is written; each file is written to a
+// temporary name, and the names are renamed only once every file is complete. Any error: one
+// line on stderr, exit 2, no output file, earlier files untouched.
 #include <fmt/format.h>
 
 #include <optional>
@@ -77,6 +78,10 @@ void check_outputs(const MeshArgs& a, Stage until) {
     for (const std::string& out : a.outputs) run::check_mesh_output(out, until);
     if (!a.report.empty()) run::check_report_output(a.report, ".json", "the report");
     if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
+    std::vector<std::string> all = a.outputs;
+    for (const std::string* text : {&a.report, &a.html})
+        if (!text->empty()) all.push_back(*text);
+    run::check_distinct_outputs(all);
 }
 
 // All files or none: every file is complete under a temporary name before any target is

@@ -38,6 +38,47 @@ void check_mesh_output(const std::string& path, Stage stage) {
     require_writable(path);
 }
 
+namespace {
+
+// The path with its existing part resolved (links, "..", "."), for comparing outputs.
+fs::path resolved(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    return ec ? fs::absolute(path).lexically_normal() : p;
+}
+
+// The folder of a .vtm's parts: beside it, named after its stem (engine/io/vtu_writer.cpp).
+fs::path parts_folder(const fs::path& vtm) { return vtm.parent_path() / vtm.stem(); }
+
+bool inside(const fs::path& file, const fs::path& folder) {
+    for (fs::path p = file.parent_path(); !p.empty() && p != p.root_path(); p = p.parent_path())
+        if (p == folder) return true;
+    return false;
+}
+
+}  // namespace
+
+void check_distinct_outputs(const std::vector<std::string>& paths) {
+    std::vector<fs::path> real;
+    for (const std::string& p : paths) real.push_back(resolved(p));
+    for (std::size_t i = 0; i < paths.size(); ++i)
+        for (std::size_t j = 0; j < paths.size(); ++j) {
+            if (i == j) continue;
+            const bool vtm_i = lower_extension(paths[i]) == ".vtm", vtm_j = lower_extension(paths[j]) == ".vtm";
+            std::error_code ec;
+            if (i < j && (real[i] == real[j] || fs::equivalent(real[i], real[j], ec)))
+                throw Error("cannot write '" + paths[j] + "': it is the same file as '" + paths[i] +
+                            "'; give each output its own name");
+            if (vtm_i && inside(real[j], parts_folder(real[i])))
+                throw Error("cannot write '" + paths[j] + "': it is inside '" + parts_folder(paths[i]).string() +
+                            "', where '" + paths[i] + "' writes its parts; give it another folder");
+            if (i < j && vtm_i && vtm_j && parts_folder(real[i]) == parts_folder(real[j]))
+                throw Error("cannot write '" + paths[j] + "': '" + paths[i] +
+                            "' writes its parts to the same folder '" + parts_folder(paths[i]).string() +
+                            "'; give one of them another name");
+        }
+}
+
 WriteOptions write_options(bool msh_ascii, const std::string& inp_family, const std::string& inp_pyramid,
                            Naming naming) {
     const std::string family = option_name("inp_family", naming), pyramid = option_name("inp_pyramid", naming);

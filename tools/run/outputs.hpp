@@ -35,6 +35,11 @@ void check_mesh_output(const std::string& path, Stage stage);
 // in the error ("the report", "the HTML report").
 void check_report_output(const std::string& path, const char* extension, const char* what);
 
+// No two of a run's files are one: the same file named twice (also through "..", "." or a
+// link), a file inside the folder where a .vtm writes its parts, or two .vtm files that share
+// that folder. Throws tubemesh::Error naming both; call it before any work.
+void check_distinct_outputs(const std::vector<std::string>& paths);
+
 // Written to a temporary name and renamed (engine/io/atomic_file.hpp).
 void write_text(const std::string& path, const std::string& text);
 

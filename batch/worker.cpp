@@ -18,6 +18,7 @@
 #include "geom/import/import.hpp"
 #include "geom/mesh_file.hpp"
 #include "geom/prepare.hpp"
+#include "geom/working_scale.hpp"
 #include "tools/run/html_report.hpp"
 #include "tools/run/mesh_report.hpp"
 #include "tools/run/outputs.hpp"
@@ -63,7 +64,8 @@ nlohmann::json measure(const MeasureSummary& m) { return {{"min", m.min}, {"mean
 nlohmann::json estimate(const nlohmann::json& r) {
     const nlohmann::json& o = r.at("options");
     const geom::Model model = request_model(r, solid_of(o));
-    const geom::PrepareOptions prepare = geom::prepare_options(mesh_options(o, 1));
+    const geom::PrepareOptions prepare =
+        geom::prepare_options(geom::working_options(mesh_options(o, 1), model.scale_exponent()));
     const geom::TubeSearch found = geom::find_tubes(model, prepare.tubes);
     const geom::SizePlan plan = geom::plan_sizes(model, found.tubes, prepare.sizing);
     return {{"status", "done"}, {"estimate", geom::estimate_run_elements(model, found, plan, prepare).total()}};

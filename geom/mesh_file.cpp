@@ -10,6 +10,7 @@
 #include "geom/describe_groups.hpp"
 #include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
+#include "geom/working_scale.hpp"
 
 namespace tubemesh::geom {
 
@@ -41,8 +42,11 @@ PhaseReport model_phase(const char* name, double seconds, const Model& model) {
     return {name, seconds, {{"faces", double(model.face_count())}, {"edges", double(model.edge_count())}}, {}};
 }
 
-// The run after the model exists; `first` is the import or build phase, if any.
-MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until, std::optional<PhaseReport> first) {
+// The run on a model at working scale (working_scale.hpp); `options` are the user's.
+MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage until,
+                     std::optional<PhaseReport> first) {
+    const int k = model.scale_exponent();
+    const MeshOptions options = working_options(user_options, k);
     const PreparedModel prepared = prepare_model(model, prepare_options(options));
     MeshRun run;
     run.result = run_pipeline(prepared.pipeline_input(), options, until);
@@ -61,11 +65,27 @@ MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until,
     run.source = model.report().source;
     run.format = model.report().format;
     run.name = model.report().name;
-    run.model_lines = prepared.report_lines();
+    run.model_lines = prepared.report_lines(k);
     run.size = prepared.geometry.size;
     run.sweep_size = prepared.geometry.sweep_size;
     run.tubes = prepared.geometry.tubes.size();
+    scale_back(run, k);
     return run;
+}
+
+// The run after the model exists; `first` is the import or build phase, if any. A model not
+// yet at working scale is meshed as a scaled copy; an error met at working scale says so, since
+// the lengths in its message are that scale's.
+MeshRun mesh_loaded(const Model& model, const MeshOptions& options, Stage until, std::optional<PhaseReport> first) {
+    const std::optional<Model> copy = working_copy(model);
+    const Model& working = copy ? *copy : model;
+    if (working.scale_exponent() == 0) return mesh_working(working, options, until, std::move(first));
+    try {
+        return mesh_working(working, options, until, std::move(first));
+    } catch (const Error& e) {
+        throw Error(std::string(e.what()) + " [the solid is meshed scaled by 1e" +
+                    std::to_string(-working.scale_exponent()) + ": lengths in this message are at that scale]");
+    }
 }
 
 }  // namespace

@@ -10,10 +10,12 @@
 
 namespace tubemesh::geom {
 
-Model make_model(const TopoDS_Solid& solid, ImportReport report, std::optional<double> fixed_order_volume) {
+Model make_model(const TopoDS_Solid& solid, ImportReport report, std::optional<double> fixed_order_volume,
+                 int scale_exponent) {
     auto impl = std::make_unique<Model::Impl>();
     impl->solid = solid;
     impl->fixed_order_volume = fixed_order_volume;
+    impl->scale_exponent = scale_exponent;
     TopExp::MapShapes(solid, TopAbs_FACE, impl->faces);
     TopExp::MapShapes(solid, TopAbs_EDGE, impl->edges);
     impl->report = std::move(report);
@@ -30,6 +32,7 @@ int Model::edge_count() const { return impl_->edges.Extent(); }
 std::string Model::face_name(int id) { return "face_" + std::to_string(id); }
 std::string Model::edge_name(int id) { return "edge_" + std::to_string(id); }
 const ImportReport& Model::report() const { return impl_->report; }
+int Model::scale_exponent() const { return impl_->scale_exponent; }
 
 double Model::volume() const {
     // The adaptive integration: the fixed-order default was off by 60% of a thin B-spline

@@ -46,8 +46,11 @@ public:
     static std::string face_name(int id);
     static std::string edge_name(int id);
 
+    // Lengths, areas and volumes are the working space's (geom/working_scale.hpp): the source's
+    // scaled by 10^-scale_exponent(). 0 (no scaling) for every model of diagonal 1 to 1000.
     double volume() const;  // of the solid, by OpenCASCADE's volume integration
     BoundingBox bounds() const;
+    int scale_exponent() const;
 
     const ImportReport& report() const;
 

@@ -24,12 +24,15 @@ struct Model::Impl {
     // positive volume, and rough_measures reuses it (on a block with curved B-spline holes
     // it costs as much as a third of the tet step: paper-ex2, 0.59 G instructions).
     std::optional<double> fixed_order_volume;
+    // The solid is the source's scaled by 10^-scale_exponent (geom/working_scale.hpp).
+    int scale_exponent = 0;
 };
 
 // Wraps one solid, numbering its faces and edges in TopExp::MapShapes order (deterministic for
 // a given shape). The caller has already checked the solid (see check_solid in geom/import).
+// `scale_exponent`: the solid is the source's scaled by 10^-scale_exponent.
 Model make_model(const TopoDS_Solid& solid, ImportReport report,
-                 std::optional<double> fixed_order_volume = std::nullopt);
+                 std::optional<double> fixed_order_volume = std::nullopt, int scale_exponent = 0);
 
 inline const TopoDS_Solid& solid_of(const Model& m) { return m.impl().solid; }
 inline TopoDS_Face face_of(const Model& m, int id) { return TopoDS::Face(m.impl().faces.FindKey(id)); }

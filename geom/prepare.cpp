@@ -14,6 +14,7 @@
 #include "geom/tubes/geometry_diagnosis.hpp"
 #include "geom/sizing/sizing_distances.hpp"
 #include "geom/surface_map_occt.hpp"
+#include "geom/working_scale.hpp"
 
 namespace tubemesh::geom {
 
@@ -204,28 +205,31 @@ PipelineInput PreparedModel::pipeline_input() const {
     return PipelineInput{geometry, std::move(lookup), std::move(faces), gap_sizes};
 }
 
-std::vector<std::string> PreparedModel::report_lines() const {
+std::vector<std::string> PreparedModel::report_lines(int scale_exponent) const {
+    const TubeSearch found = at_source_scale(tubes, scale_exponent);
+    const SizePlan shown = at_source_scale(plan, scale_exponent);
     std::vector<std::string> lines;
-    lines.push_back(fmt::format("{} tube{} found", tubes.tubes.size(), tubes.tubes.size() == 1 ? "" : "s"));
-    for (std::size_t t = 0; t < tubes.tubes.size(); ++t) {
-        const TubeInfo& tube = tubes.tubes[t];
+    lines.push_back(fmt::format("{} tube{} found", found.tubes.size(), found.tubes.size() == 1 ? "" : "s"));
+    for (std::size_t t = 0; t < found.tubes.size(); ++t) {
+        const TubeInfo& tube = found.tubes[t];
         lines.push_back(fmt::format("  tube {}: faces {}, radius {:.6g}, length {:.6g}, hosts face_{} and face_{}",
                                     t + 1, join(tube.faces), tube.radius_max, tube.length, tube.hosts[0],
                                     tube.hosts[1]));
     }
-    for (const TubeRejection& r : tubes.rejected) {
+    for (const TubeRejection& r : found.rejected) {
         if (r.faces.empty())
             lines.push_back(fmt::format("  not a tube: {}", r.reason));
         else
             lines.push_back(fmt::format("  not a tube (faces {}): {}", join(r.faces), r.reason));
     }
-    lines.push_back(fmt::format("sizes: S = {:.6g}, St = {:.6g} (from S = {:.6g} ({}), St = {:.6g} ({}))", plan.size,
-                                plan.sweep_size, plan.initial_size, plan.size_source, plan.initial_sweep_size,
-                                plan.sweep_source));
-    for (const SizeChange& c : plan.changes)
+    lines.push_back(fmt::format("sizes: S = {:.6g}, St = {:.6g} (from S = {:.6g} ({}), St = {:.6g} ({}))", shown.size,
+                                shown.sweep_size, shown.initial_size, shown.size_source, shown.initial_sweep_size,
+                                shown.sweep_source));
+    for (const SizeChange& c : shown.changes)
         lines.push_back(fmt::format("  {}: St {:.6g} -> {:.6g}, S {:.6g} -> {:.6g}: {}", c.rule, c.old_sweep_size,
                                     c.new_sweep_size, c.old_size, c.new_size, c.reason));
-    for (const std::string& w : plan.warnings) lines.push_back("  warning: " + w);
+    for (const std::string& w : shown.warnings) lines.push_back("  warning: " + w);
+    if (scale_exponent != 0) lines.push_back(working_scale_line(scale_exponent));
     return lines;
 }
 

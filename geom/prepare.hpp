@@ -52,8 +52,9 @@ public:
     // Refers to this object: valid while it lives and is not moved.
     PipelineInput pipeline_input() const;
     // What a user should know before meshing: tubes found and not, S and St and every change
-    // the sizing rules made, warnings. One line each, no trailing newline.
-    std::vector<std::string> report_lines() const;
+    // the sizing rules made, warnings. One line each, no trailing newline. Figures in the
+    // source's unit for a model at working scale exponent `scale_exponent` (working_scale.hpp).
+    std::vector<std::string> report_lines(int scale_exponent = 0) const;
 };
 
 // The lower bound on the elements a run at the plan's sizes makes (element_budget.hpp), the

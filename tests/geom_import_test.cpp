@@ -31,6 +31,7 @@
 #include "geom/import/solid_check.hpp"
 #include "geom/import/step_write.hpp"
 #include "geom/import/step_write_occt.hpp"
+#include "geom/working_scale.hpp"
 #include "tests/support/error_of.hpp"
 
 namespace tubemesh::geom {
@@ -186,10 +187,12 @@ TEST(GeomImport, IgesInMetresIsNotRescaled) {
     const Model m = import_model(path);
     EXPECT_EQ(m.report().length_unit, "metre");
     // The writer converted the 1 x 2 x 3 mm box to metres in the file; the reader keeps the
-    // file's numbers instead of converting them back to millimetres.
+    // file's numbers instead of converting them back to millimetres. So small a box is held
+    // at working scale, 1e3 times the file's (geom/working_scale.hpp).
+    EXPECT_EQ(m.scale_exponent(), -3);
     const BoundingBox bb = m.bounds();
-    EXPECT_NEAR(bb.max.x - bb.min.x, 0.001, 1e-9);
-    EXPECT_NEAR(bb.max.z - bb.min.z, 0.003, 1e-9);
+    EXPECT_NEAR(from_working(bb.max.x - bb.min.x, m.scale_exponent()), 0.001, 1e-9);
+    EXPECT_NEAR(from_working(bb.max.z - bb.min.z, m.scale_exponent()), 0.003, 1e-9);
 }
 
 // The STEP round trip keeps the solid valid, its volume, its faces and the unit label, and

@@ -3,6 +3,8 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IGESControl_Reader.hxx>
+#include <Interface_Static.hxx>
+#include <Precision.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <STEPConstruct_UnitContext.hxx>
@@ -28,6 +30,8 @@
 #include "engine/io/file_bytes.hpp"
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/xstep_state.hpp"
+#include "geom/working_scale.hpp"
+#include "geom/working_scale_occt.hpp"
 
 namespace tubemesh::geom {
 
@@ -80,8 +84,36 @@ double step_reader_length_factor(const Handle(StepData_StepModel)& model) {
     return 0.0;
 }
 
-CadFile read_step(const std::filesystem::path& path) {
+// `scale_exponent` k: the reader scales the coordinates by 10^-k (to the working scale).
+// While a file is read at working scale, its healing uses OpenCASCADE's own precision: the
+// file's uncertainty is a length in its unit (OCCT writes 1e-7 whatever the size), which the
+// scaling would otherwise carry into the working space. Put back at the end of the read.
+class WorkingPrecision {
+public:
+    explicit WorkingPrecision(int scale_exponent) : active_(scale_exponent != 0) {
+        if (!active_) return;
+        mode_ = Interface_Static::IVal("read.precision.mode");
+        value_ = Interface_Static::RVal("read.precision.val");
+        Interface_Static::SetIVal("read.precision.mode", 1);  // 1: the value below, not the file's
+        Interface_Static::SetRVal("read.precision.val", Precision::Confusion());
+    }
+    ~WorkingPrecision() {
+        if (!active_) return;
+        Interface_Static::SetIVal("read.precision.mode", mode_);
+        Interface_Static::SetRVal("read.precision.val", value_);
+    }
+    WorkingPrecision(const WorkingPrecision&) = delete;
+    WorkingPrecision& operator=(const WorkingPrecision&) = delete;
+
+private:
+    bool active_;
+    int mode_ = 0;
+    double value_ = 0;
+};
+
+CadFile read_step(const std::filesystem::path& path, int scale_exponent) {
     const XstepSession session;
+    const WorkingPrecision precision(scale_exponent);
     STEPControl_Reader reader;
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
         throw Error(quoted(path) + " is not a readable STEP file: OpenCASCADE's STEP reader rejected it "
@@ -102,7 +134,9 @@ CadFile read_step(const std::filesystem::path& path) {
         }
     }
     if (const double factor = step_reader_length_factor(reader.StepModel()); factor > 0)
-        reader.SetSystemLengthUnit(factor);
+        reader.SetSystemLengthUnit(from_working(factor, scale_exponent));
+    else if (scale_exponent != 0)
+        return {};  // no unit to scale through: read_cad_file scales the shape itself
     reader.TransferRoots();
     if (reader.NbShapes() == 0)
         throw Error(quoted(path) + " was read as STEP but holds no shape OpenCASCADE can convert (no solid, shell or face)");
@@ -119,7 +153,8 @@ CadFile read_step(const std::filesystem::path& path) {
     return out;
 }
 
-CadFile read_iges(const std::filesystem::path& path) {
+CadFile read_iges(const std::filesystem::path& path, int scale_exponent) {
+    const WorkingPrecision precision(scale_exponent);
     IGESControl_Reader reader;
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
         throw Error(quoted(path) + " is not a readable IGES file: OpenCASCADE's IGES reader rejected it "
@@ -129,7 +164,7 @@ CadFile read_iges(const std::filesystem::path& path) {
     const Handle(TCollection_HAsciiString) name = header.UnitName();
     out.length_unit = iges_unit_name(header.UnitFlag(), name.IsNull() ? std::string() : name->ToCString());
     // The reader scales by UnitValue / CascadeUnit: making them equal keeps file coordinates.
-    header.SetCascadeUnit(header.UnitValue());
+    header.SetCascadeUnit(from_working(header.UnitValue(), scale_exponent));
     reader.TransferRoots();
     if (reader.NbShapes() == 0)
         throw Error(quoted(path) + " was read as IGES but holds no shape OpenCASCADE can convert (no solid, shell or face)");
@@ -188,14 +223,36 @@ CadFormat detect_cad_format(const std::filesystem::path& path) {
                 "or BREP (.brep)");
 }
 
+namespace {
+
+CadFile read_at_scale(const std::filesystem::path& path, CadFormat format, int scale_exponent) {
+    switch (format) {
+        case CadFormat::Step: return read_step(path, scale_exponent);
+        case CadFormat::Iges: return read_iges(path, scale_exponent);
+        case CadFormat::Brep: return read_brep(path);
+    }
+    throw Error("cannot read " + quoted(path) + ": unknown format");
+}
+
+}  // namespace
+
 CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
     silence_occt_output();
     try {
-        switch (format) {
-            case CadFormat::Step: return read_step(path);
-            case CadFormat::Iges: return read_iges(path);
-            case CadFormat::Brep: return read_brep(path);
+        CadFile file = read_at_scale(path, format, 0);
+        // A file far from the working scale is read again with the readers' own unit
+        // conversion scaling it, so their healing (absolute tolerances) already sees the
+        // working-scale solid; a BREP file, or a STEP file without units, is scaled after.
+        const int k = working_scale_exponent(file.shape);
+        if (k == 0) return file;
+        CadFile scaled = format == CadFormat::Brep ? CadFile{} : read_at_scale(path, format, k);
+        if (scaled.shape.IsNull()) {
+            scaled = std::move(file);
+            scaled.shape = scaled_to_working(scaled.shape, k);
+            scaled.names.clear();  // the names point at the unscaled solids
         }
+        scaled.scale_exponent = k;
+        return scaled;
     } catch (const Standard_Failure& e) {
         throw Error("cannot read " + quoted(path) + " as " + format_name(format) + ": OpenCASCADE failed with \"" +
                     e.GetMessageString() + "\"");

@@ -25,10 +25,13 @@ struct CadFile {
     // STEP only: the solids the file names (their MANIFOLD_SOLID_BREP's name), in file order, as
     // the translator made them: the reader's healing may hand `shape` copies of them.
     std::vector<std::pair<TopoDS_Shape, std::string>> names;
+    // `shape` is the file's scaled by 10^-scale_exponent (geom/working_scale.hpp).
+    int scale_exponent = 0;
 };
 
 // Coordinates are kept as written in the file: the readers' conversion to millimetres is
-// cancelled, so a 15 x 25 x 4 block written in metres imports as 15 x 25 x 4.
+// cancelled, so a 15 x 25 x 4 block written in metres imports as 15 x 25 x 4. A file whose
+// bounding-box diagonal is outside 1 to 1000 is read at working scale instead.
 // Throws tubemesh::Error when the file cannot be read or holds no shape.
 CadFile read_cad_file(const std::filesystem::path& path, CadFormat format);
 

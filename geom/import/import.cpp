@@ -10,6 +10,8 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 
+#include <fmt/format.h>
+
 #include <optional>
 #include <vector>
 
@@ -105,6 +107,11 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
     report.format = format_name(format);
     report.length_unit = file.length_unit;
     report.notes = std::move(file.notes);
+    const int scale_exponent = file.scale_exponent;
+    if (scale_exponent != 0)
+        report.notes.push_back(fmt::format("read scaled by 1e{} (tubemesh meshes a solid of size 1 to 1000); the mesh "
+                                           "and the report are in the file's unit",
+                                           -scale_exponent));
 
     try {
         std::vector<TopoDS_Solid> solids = solids_in(file.shape);
@@ -151,7 +158,7 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
         if (props.Mass() <= 0)
             throw Error("solid " + std::to_string(report.solid_index) + " of " + quoted(path) +
                         " has no positive volume (it is empty or inside out): repair it in the CAD tool");
-        return make_model(final_solids.front(), std::move(report), props.Mass());
+        return make_model(final_solids.front(), std::move(report), props.Mass(), scale_exponent);
     } catch (const Standard_Failure& e) {
         throw Error("cannot import " + quoted(path) + ": OpenCASCADE failed with \"" + e.GetMessageString() + "\"");
     }

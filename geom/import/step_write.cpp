@@ -27,6 +27,7 @@
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/step_write_occt.hpp"
 #include "geom/import/xstep_state.hpp"
+#include "geom/working_scale_occt.hpp"
 
 namespace tubemesh::geom {
 
@@ -123,11 +124,13 @@ void write_step_shape(const TopoDS_Shape& shape, const std::filesystem::path& pa
 
 void write_step(const Model& model, const std::filesystem::path& path) {
     const std::string& name = model.report().name;
+    // Back at the source's scale (a scaled model's tolerances are reset on the way).
+    const TopoDS_Shape solid = scaled_to_working(solid_of(model), -model.scale_exponent());
     if (name.empty()) {
-        write_step_shape(solid_of(model), path, model.report().length_unit);
+        write_step_shape(solid, path, model.report().length_unit);
     } else {
-        const NamedShape named[] = {{solid_of(model), name}};
-        write_step_shape(solid_of(model), path, model.report().length_unit, named);
+        const NamedShape named[] = {{solid, name}};
+        write_step_shape(solid, path, model.report().length_unit, named);
     }
 }
 

@@ -6,8 +6,9 @@
 
 namespace tubemesh::geom {
 
-// Writes the solid with its coordinates unchanged, labelled with the model's length unit when
-// STEP has a name for it (millimetre, metre, centimetre, inch, foot, ...), else millimetre, and
+// Writes the solid with its source's coordinates (a model held at working scale is scaled back),
+// labelled with the model's length unit when STEP has a name for it (millimetre, metre,
+// centimetre, inch, foot, ...), else millimetre, and
 // named with the model's name when it has one (import reads it back into ImportReport::name).
 // The file appears under `path` only when complete: it is written to a temporary name in the
 // same directory and renamed. Throws tubemesh::Error when the directory is not writable or

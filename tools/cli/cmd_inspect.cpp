@@ -17,6 +17,7 @@
 #include "geom/sizing/sizing.hpp"
 #include "geom/surface_map_occt.hpp"
 #include "geom/tubes/tubes.hpp"
+#include "geom/working_scale.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/option_checks.hpp"
 
@@ -100,6 +101,21 @@ nlohmann::json bound_json(const Bound& b) {
             {"refused", b.refused()}};
 }
 
+// The model's volume and box in the file's unit (the model is at working scale).
+double source_volume(const geom::Model& model) {
+    const int k = model.scale_exponent();
+    return geom::from_working(geom::from_working(geom::from_working(model.volume(), k), k), k);
+}
+
+geom::BoundingBox source_bounds(const geom::Model& model) {
+    const int k = model.scale_exponent();
+    const geom::BoundingBox b = model.bounds();
+    const auto back = [k](const Vec3& p) {
+        return Vec3{geom::from_working(p.x, k), geom::from_working(p.y, k), geom::from_working(p.z, k)};
+    };
+    return {back(b.min), back(b.max)};
+}
+
 nlohmann::json inspect_json(const geom::Model& model, const std::vector<int>& loops_per_face,
                             const geom::TubeSearch& found, const geom::SizePlan& plan, const Bound& bound) {
     const auto roles = face_roles(found);
@@ -115,17 +131,17 @@ nlohmann::json inspect_json(const geom::Model& model, const std::vector<int>& lo
     for (const geom::TubeRejection& r : found.rejected) rejected.push_back({{"faces", r.faces}, {"reason", r.reason}});
     const geom::ImportReport& report = model.report();
     return {{"file", report.source}, {"format", report.format},     {"length_unit", report.length_unit},
-            {"faces", faces},        {"edges", model.edge_count()}, {"volume", model.volume()},
+            {"faces", faces},        {"edges", model.edge_count()}, {"volume", source_volume(model)},
             {"tubes", tubes},        {"not_tubes", rejected},       {"sizes", plan_json(plan)},
-            {"elements_at_least", bound_json(bound)}};
+            {"elements_at_least", bound_json(bound)}, {"working_scale_exponent", model.scale_exponent()}};
 }
 
 void print_text(const geom::Model& model, const std::vector<int>& loops_per_face, const geom::TubeSearch& found,
                 const geom::SizePlan& plan, const Bound& bound) {
     const geom::ImportReport& report = model.report();
-    const geom::BoundingBox b = model.bounds();
+    const geom::BoundingBox b = source_bounds(model);
     fmt::print("{} ({}, {}): {} faces, {} edges, volume {:.6g}\n", report.source, report.format, report.length_unit,
-               model.face_count(), model.edge_count(), model.volume());
+               model.face_count(), model.edge_count(), source_volume(model));
     fmt::print("bounding box ({:.6g}, {:.6g}, {:.6g}) to ({:.6g}, {:.6g}, {:.6g})\n\n", b.min.x, b.min.y, b.min.z,
                b.max.x, b.max.y, b.max.z);
 
@@ -163,6 +179,7 @@ void print_text(const geom::Model& model, const std::vector<int>& loops_per_face
         fmt::print("  {}: St {:.6g} -> {:.6g}, S {:.6g} -> {:.6g}: {}\n", c.rule, c.old_sweep_size, c.new_sweep_size,
                    c.old_size, c.new_size, c.reason);
     for (const std::string& w : plan.warnings) fmt::print("  warning: {}\n", w);
+    if (model.scale_exponent() != 0) fmt::print("  {}\n", geom::working_scale_line(model.scale_exponent()));
 
     const geom::ElementEstimate& e = bound.estimate;
     fmt::print("\nelements at these sizes: at least {:.3g} (tets {:.3g}, surface triangles {:.3g}, hexes {:.3g}, "
@@ -189,10 +206,11 @@ Command add_inspect_command(CLI::App& app) {
                 geom::ImportOptions import;
                 import.solid = args->solid;
                 const geom::Model model = geom::import_model(args->path, import);  // Error -> exit 2 in main
+                const int k = model.scale_exponent();
                 const geom::TubeSearch found = geom::find_tubes(model);
                 geom::SizingOptions sizing;
-                sizing.size = args->size;
-                sizing.sweep_size = args->sweep_size;
+                sizing.size = geom::to_working(args->size, k);
+                sizing.sweep_size = geom::to_working(args->sweep_size, k);
                 const geom::SizePlan plan = geom::plan_sizes(model, found.tubes, sizing);
                 std::vector<int> loops;
                 for (const auto& map : geom::make_surface_maps(model))
@@ -201,10 +219,13 @@ Command add_inspect_command(CLI::App& app) {
                 const geom::PrepareOptions prepare;
                 const Bound bound{geom::estimate_run_elements(model, found, plan, prepare),
                                   geom::element_limit(prepare.budget)};
+                // Every figure shown in the file's unit (the model is at working scale).
+                const geom::TubeSearch found_shown = geom::at_source_scale(found, k);
+                const geom::SizePlan plan_shown = geom::at_source_scale(plan, k);
                 if (args->json)
-                    fmt::print("{}\n", inspect_json(model, loops, found, plan, bound).dump(2));
+                    fmt::print("{}\n", inspect_json(model, loops, found_shown, plan_shown, bound).dump(2));
                 else
-                    print_text(model, loops, found, plan, bound);
+                    print_text(model, loops, found_shown, plan_shown, bound);
                 return 0;
             }};
 }

@@ -90,6 +90,14 @@ std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& 
     if (tubes.tubes.empty())
         w.push_back("no tubular hole found in the solid: no hex rings or pyramids, the volume is meshed with "
                     "tetrahedra only");
+    // A hole that lost its ring says so by name: the tets are a fallback, not what was asked for.
+    for (const TubeRejection& r : tubes.rejected)
+        if (r.crease)
+            w.push_back(fmt::format(
+                "faces {} form one hole whose curved walls meet along the axis at an angle ({}), as pipes that overlap "
+                "do: no hex ring fits it, so it is meshed with tetrahedra; for hex rings, keep the pipes at least a "
+                "tenth of a diameter apart or make them one pipe in the CAD model",
+                join(r.faces), r.reason));
     for (const std::string& x : plan.warnings) w.push_back(x);
     return w;
 }

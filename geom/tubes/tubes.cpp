@@ -48,7 +48,7 @@ TubeSearch find_tubes(const Model& model, const TubeOptions& options) {
         std::string why;
         const auto wall = TubeWall::build(index, c, options, why);
         if (!wall) {
-            out.rejected.push_back({c.faces, why});
+            out.rejected.push_back({c.faces, why, 2, why.starts_with(TubeWall::kCreaseReason)});
             continue;
         }
         const auto axis = TubeAxis::build(*wall, kGeneratorStartFraction);

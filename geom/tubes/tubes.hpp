@@ -50,6 +50,9 @@ struct TubeRejection {
     std::vector<int> faces;
     std::string reason;
     int loops = -1;  // the loops bounding the group, when the search got as far as counting them
+    // Curved faces only, two loops, but two of them meet along the axis at an angle: the hole
+    // of pipes that overlap (or a slot milled with curved sides). It gets tets, not a ring.
+    bool crease = false;
 };
 
 struct TubeSearch {

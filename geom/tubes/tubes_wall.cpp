@@ -168,7 +168,7 @@ std::string TubeWall::check_crease(const Face& f, const TopoDS_Edge& edge, int i
         const double deg = n1.Angle(n2) * 180 / std::numbers::pi;
         if (deg > options.max_crease_deg) {
             std::ostringstream s;
-            s << "crease of " << deg << " degrees along edge " << id << " between faces " << f.id << " and " << gid;
+            s << kCreaseReason << deg << " degrees along edge " << id << " between faces " << f.id << " and " << gid;
             return s.str();
         }
     }

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geom/tubes/tubes_generator.hpp"
@@ -26,6 +27,9 @@ namespace tubemesh::geom {
 
 class TubeWall {
 public:
+    // The reason build() gives for a group whose faces meet along the axis at an angle starts
+    // with this.
+    static constexpr std::string_view kCreaseReason = "crease of ";
     // nullptr, with the reason in `why`, when the faces do not form a smooth closed wall.
     static std::unique_ptr<TubeWall> build(const TopologyIndex& index, const TubeCandidate& candidate,
                                            const TubeOptions& options, std::string& why);

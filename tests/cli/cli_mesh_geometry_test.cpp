@@ -99,4 +99,23 @@ TEST(CliMeshGeometryHoles, AHoleNearAFaceMeshesTheGapAtItsWidth) {
     EXPECT_EQ(run_command(cli() + " check " + q(dir / "out.msh")).exit_code, 0);
 }
 
+// Two parallel pipes whose walls overlap make one creased hole: no ring fits it, so it is meshed
+// with tets, and the warning names its faces and says why (it used to say only "no tubular hole
+// found": the pipes lost their rings without a word).
+TEST(CliMeshGeometryHoles, OverlappingPipesAreNamedWhenTheyLoseTheirRings) {
+    TempDir dir;
+    std::ofstream(dir / "spec.json") << R"({"check_clearance": false, "box": [5, 4.5, 5.5], "pipes": [
+        {"path": "line", "diameter": 0.28, "points": [[0, 1.98, 0.16125], [5, 1.98, 0.16125]]},
+        {"path": "line", "diameter": 0.13, "points": [[0, 1.98, 0.28825], [5, 1.98, 0.28825]]}]})";
+    ASSERT_EQ(run_command(cli() + " make-block --spec " + q(dir / "spec.json") + " -o " + q(dir / "in.step")).exit_code,
+              0);
+    const auto r = run_command(cli() + " mesh " + q(dir / "in.step") + " -o " + q(dir / "out.msh"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("faces 6,7,8 form one hole whose curved walls meet along the axis at an angle"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("as pipes that overlap do"), std::string::npos) << r.err;
+    EXPECT_EQ(run_command(cli() + " check " + q(dir / "out.msh")).exit_code, 0);
+}
+
 }  // namespace

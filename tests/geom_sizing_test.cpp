@@ -17,9 +17,9 @@ namespace {
 
 constexpr double kR = 0.02;
 
-// `local_ring` false: the paper's one St, cut by the rules (the default leaves rules 1 and 2
-// and the boundary and rings guards to each ring's local thickness).
-geom::SizePlan plan_for(const TopoDS_Solid& solid, double sweep, bool local_ring = true) {
+// `local_ring`: rules 1 and 2 and the boundary and rings guards are left to each ring's local
+// thickness; without (the default), the paper's one St, cut by the rules.
+geom::SizePlan plan_for(const TopoDS_Solid& solid, double sweep, bool local_ring = false) {
     const geom::Model model = test::model_of(solid);
     const geom::TubeSearch found = geom::find_tubes(model);
     geom::SizingOptions options;
@@ -81,11 +81,11 @@ TEST(GeomSizing, PipeNearAFaceTriggersRuleOne) {
     const TopoDS_Solid solid =
         test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR);
     // The local ring: St stays, the ring thins towards the face only.
-    const geom::SizePlan local = plan_for(solid, 0.1);
+    const geom::SizePlan local = plan_for(solid, 0.1, true);
     EXPECT_TRUE(local.changes.empty()) << changes(local);
     EXPECT_EQ(local.sweep_size, 0.1);
     EXPECT_TRUE(local.local_ring);
-    const geom::SizePlan p = plan_for(solid, 0.1, false);
+    const geom::SizePlan p = plan_for(solid, 0.1);
     ASSERT_GE(p.changes.size(), 1u);
     EXPECT_EQ(p.changes[0].rule.substr(0, 2), "1:") << changes(p);
     EXPECT_NEAR(p.dcb, 0.05, 1e-7);

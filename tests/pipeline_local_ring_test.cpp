@@ -1,7 +1,7 @@
 // The ring's thickness is local (geom/sizing/ring_room.hpp): a straight pipe r = 0.05 along a
 // 4 x 3 x 2 box at clearance c above its bottom face keeps the full St = 2r on the side away
 // from the face and thins only towards it, meshes, passes the check, and takes far fewer
-// elements than one St cut for the whole pipe (--global-ring: 29,909 at c = 2r, 71,994 at
+// elements than one St cut for the whole pipe (the paper's one St: 29,909 at c = 2r, 71,994 at
 // c = r, 206,123 at c = r/2).
 #include <gtest/gtest.h>
 
@@ -16,6 +16,12 @@
 
 namespace tubemesh {
 namespace {
+
+MeshOptions local_ring() {
+    MeshOptions o;
+    o.local_ring = true;
+    return o;
+}
 
 constexpr double kRadius = 0.05;
 
@@ -50,7 +56,7 @@ Sides ring_sides(const PipelineResult& r) {
 }
 
 TEST(LocalRing, FullAwayFromTheFloorThinTowardsIt) {
-    const geom::MeshRun run = geom::mesh_spec(pipe_above_floor(kRadius), {}, Stage::Sweep);
+    const geom::MeshRun run = geom::mesh_spec(pipe_above_floor(kRadius), local_ring(), Stage::Sweep);
     EXPECT_NEAR(run.sweep_size, 2 * kRadius, 1e-9);  // St is not cut for the whole pipe
     const Sides s = ring_sides(run.result);
     EXPECT_NEAR(s.away, 2 * kRadius, 1e-9);
@@ -63,7 +69,7 @@ TEST(LocalRing, FullAwayFromTheFloorThinTowardsIt) {
 }
 
 TEST(LocalRing, CentredPipeKeepsThePapersRing) {
-    const geom::MeshRun run = geom::mesh_spec(pipe_above_floor(1 - kRadius), {}, Stage::Sweep);
+    const geom::MeshRun run = geom::mesh_spec(pipe_above_floor(1 - kRadius), local_ring(), Stage::Sweep);
     EXPECT_TRUE(run.result.sweep.outer_quad_scale.empty());
     const Sides s = ring_sides(run.result);
     EXPECT_NEAR(s.floor, 2 * kRadius, 1e-9);
@@ -71,7 +77,7 @@ TEST(LocalRing, CentredPipeKeepsThePapersRing) {
 }
 
 void expect_meshes_lighter(double clearance, std::size_t global_ring_elements) {
-    const geom::MeshRun run = geom::mesh_spec(pipe_above_floor(clearance));
+    const geom::MeshRun run = geom::mesh_spec(pipe_above_floor(clearance), local_ring());
     EXPECT_TRUE(run.result.check.violations.empty());
     EXPECT_GT(run.result.mesh.cell_count(CellKind::Hex), 0u);
     // The centred pipe takes about 19,800; the global ring many times that.

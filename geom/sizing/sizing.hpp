@@ -47,9 +47,10 @@ struct SizingOptions {
     // instead of the smallest tube diameter; the rules and guards still cut it. A given St wins.
     double sweep_share = 0;
     // Rules 1 and 2 and the boundary and rings guards are left to the ring's local thickness
-    // (ring_room.hpp): St stays, and each ring thins only where a face or a tube is near. Off:
-    // the paper's one St, cut for the closest place of all.
-    bool local_ring = true;
+    // (ring_room.hpp): St stays, and each ring thins only where a face or a tube is near. Off
+    // (default): the paper's one St, cut for the closest place of all. Not yet the default:
+    // two rings facing each other across a thin gap can leave their pyramids no room.
+    bool local_ring = false;
 };
 
 struct SizeChange {

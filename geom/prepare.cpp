@@ -116,6 +116,7 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     p.sizing.size = options.size;
     p.sizing.sweep_size = options.sweep_size;
     p.sizing.sweep_share = options.sweep_share;
+    p.sizing.local_ring = options.local_ring;
     p.discretize.ring_nodes = options.circumferential;
     p.discretize.chordal = options.chordal;
     p.budget.max_elements = options.max_elements;
@@ -223,6 +224,11 @@ std::vector<std::string> PreparedModel::report_lines(int scale_exponent) const {
         lines.push_back(fmt::format("  tube {}: faces {}, radius {:.6g}, length {:.6g}, hosts face_{} and face_{}",
                                     t + 1, join(tube.faces), tube.radius_max, tube.length, tube.hosts[0],
                                     tube.hosts[1]));
+        if (t < geometry.tubes.size() && !geometry.tubes[t].room.empty()) {
+            const auto& th = geometry.tubes[t].room.thickness;
+            lines.push_back(fmt::format("    ring thinned locally to {:.3g} (St {:.6g}) where a face or a tube is near",
+                                        *std::min_element(th.begin(), th.end()), plan.sweep_size));
+        }
     }
     for (const TubeRejection& r : found.rejected) {
         if (r.faces.empty())

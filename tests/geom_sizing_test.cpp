@@ -17,11 +17,14 @@ namespace {
 
 constexpr double kR = 0.02;
 
-geom::SizePlan plan_for(const TopoDS_Solid& solid, double sweep) {
+// `local_ring`: rules 1 and 2 and the boundary and rings guards are left to each ring's local
+// thickness; without (the default), the paper's one St, cut by the rules.
+geom::SizePlan plan_for(const TopoDS_Solid& solid, double sweep, bool local_ring = false) {
     const geom::Model model = test::model_of(solid);
     const geom::TubeSearch found = geom::find_tubes(model);
     geom::SizingOptions options;
     options.sweep_size = sweep;
+    options.local_ring = local_ring;
     return geom::plan_sizes(model, found.tubes, options);
 }
 
@@ -75,9 +78,14 @@ TEST(GeomSizing, DcbFollowsABendTowardsAFace) {
 
 TEST(GeomSizing, PipeNearAFaceTriggersRuleOne) {
     // Wall 0.05 from face y = 0.
-    const geom::SizePlan p = plan_for(
-        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR),
-        0.1);
+    const TopoDS_Solid solid =
+        test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR);
+    // The local ring: St stays, the ring thins towards the face only.
+    const geom::SizePlan local = plan_for(solid, 0.1, true);
+    EXPECT_TRUE(local.changes.empty()) << changes(local);
+    EXPECT_EQ(local.sweep_size, 0.1);
+    EXPECT_TRUE(local.local_ring);
+    const geom::SizePlan p = plan_for(solid, 0.1);
     ASSERT_GE(p.changes.size(), 1u);
     EXPECT_EQ(p.changes[0].rule.substr(0, 2), "1:") << changes(p);
     EXPECT_NEAR(p.dcb, 0.05, 1e-7);
@@ -98,6 +106,7 @@ TEST(GeomSizing, CuttingStKeepsTheUsersSize) {
     geom::SizingOptions options;
     options.sweep_size = 0.1;
     options.size = 0.3;
+    options.local_ring = false;
     const geom::SizePlan p = geom::plan_sizes(model, geom::find_tubes(model).tubes, options);
     ASSERT_GE(p.changes.size(), 1u);
     EXPECT_LT(p.sweep_size, 0.07);
@@ -121,6 +130,7 @@ TEST(GeomSizing, SweepShareTakesStFromSAndTheRulesStillCutIt) {
     EXPECT_NEAR(p.size, std::sqrt(3.0) / 25, 1e-6);
     EXPECT_NEAR(p.sweep_size, 0.4 * p.size, 1e-12);
     options.size = 0.8;  // 0.32 would be 16 radii: held at 12.5 (then cut by the boundary guard)
+    options.local_ring = false;
     p = geom::plan_sizes(centred, geom::find_tubes(centred).tubes, options);
     EXPECT_NEAR(p.initial_sweep_size, 12.5 * kR, 1e-9);
     EXPECT_EQ(p.sweep_source, "economy: 12.5 tube radii");
@@ -132,6 +142,7 @@ TEST(GeomSizing, SweepShareTakesStFromSAndTheRulesStillCutIt) {
     const geom::Model near_face = test::model_of(
         test::box_with_pipes({0, 0, 0}, {1, 1, 1}, {test::straight_spine({0.5, 0.07, -0.1}, {0.5, 0.07, 1.1})}, kR));
     geom::SizingOptions share;
+    share.local_ring = false;
     share.sweep_share = 0.4;
     share.size = 0.3;
     p = geom::plan_sizes(near_face, geom::find_tubes(near_face).tubes, share);
@@ -149,7 +160,7 @@ TEST(GeomSizing, TwoClosePipesTriggerRuleTwo) {
                                                            {test::straight_spine({0.45, 0.5, -0.1}, {0.45, 0.5, 1.1}),
                                                             test::straight_spine({0.55, 0.5, -0.1}, {0.55, 0.5, 1.1})},
                                                            kR),
-                                      0.1);
+                                      0.1, false);
     EXPECT_NEAR(p.dc, 0.06, 1e-7);
     ASSERT_GE(p.changes.size(), 1u);
     EXPECT_EQ(p.changes[0].rule.substr(0, 2), "2:") << changes(p);

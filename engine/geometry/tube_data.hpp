@@ -23,6 +23,20 @@ struct TubeStation {
     double radius;  // distance from the centre to the wall, measured at this station
 };
 
+// How thick the tube's ring may be, per place along it and direction around it (geom's
+// clearance to faces and tubes over the room a ring and its pyramids take there). Sample
+// (i, d) is the thickness allowed at arc length s[i] from ring1's end, in direction
+// cos(2πd/D)·u[i] + sin(2πd/D)·(tangent[i] × u[i]); between samples it is linear in s and
+// periodic-linear in the angle (engine/sweep/ring_room.hpp reads it). Empty: no cap anywhere.
+struct RingRoom {
+    int directions = 0;                 // D
+    std::vector<double> s;              // increasing
+    std::vector<Vec3> tangent, u;       // unit, u ⊥ tangent, per sample
+    std::vector<double> thickness;      // s.size()·D, sample i's D values in a row
+
+    bool empty() const { return s.empty() || directions == 0; }
+};
+
 struct TubeData {
     std::vector<index_t> wall_faces;   // the B-rep faces of the tube's lateral surface
     index_t host1 = 0;                 // face holding ring1's loop as a hole (paper: F_n)
@@ -43,6 +57,9 @@ struct TubeData {
     // swept ring is attached to those.
     std::vector<Vec3> ring1;
     std::vector<Vec3> ring2;
+
+    // Where the ring must be thinner than St (empty: nowhere).
+    RingRoom room;
 };
 
 // How far a curved B-rep edge's chords may stray from it, as a fraction of each chord's own

@@ -159,7 +159,7 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     // and the last pass is kept whatever it leaves.
     const index_t first_triangle = out.mesh.face_count(FaceKind::Tri);
     const TetSizeCaps too_large(out.mesh, out.sweep.outer_quads, tet_far_size(in, opt), opt.tets.gradation,
-                                opt.size_growth);
+                                opt.size_growth, out.sweep.outer_quad_scale);
     SurfacePass pass;
     int passes = 0;
     std::size_t left = 0;  // triangles still too large after the last pass
@@ -205,6 +205,7 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
     in.front_quads = out.sweep.outer_quads;
     in.boundary_triangles = boundary;
     in.obstacle_quads = out.sweep.end_quads;
+    in.front_scale = out.sweep.outer_quad_scale;
     in.region = mesh.region_id("pyramids");
     PyramidResult p;
     if (!out.sweep.outer_quads.empty()) {

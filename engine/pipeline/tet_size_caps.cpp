@@ -10,7 +10,7 @@
 namespace tubemesh {
 
 TetSizeCaps::TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_quads, double far_size,
-                         double gradation, double surface_growth) {
+                         double gradation, double surface_growth, std::span<const double> quad_scale) {
     if (!(gradation >= 1.0)) throw Error("the tet gradation must be at least 1");
     if (!(surface_growth > 0) || !std::isfinite(surface_growth))
         throw Error("the surface size growth must be positive");
@@ -26,7 +26,9 @@ TetSizeCaps::TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_
             edges += norm(p - mesh.point(outer_quads[q + (k + 1) % 4]));
         }
         // A collapsed quad anchors nothing; the pyramid phase refuses it with its own message.
-        if (edges > 0) quads.push_back({c, 0.25 * edges});
+        const std::size_t index = q / 4;
+        const double thin = index < quad_scale.size() ? quad_scale[index] : 1.0;
+        if (edges > 0) quads.push_back({c, thin < 1.0 ? thin * 0.25 * edges : 0.25 * edges});
     }
     if (quads.empty()) return;
     volume_ = std::make_unique<SizeField>(SizeFieldOptions{far_size, std::max(gradation - 1.0, surface_growth)},

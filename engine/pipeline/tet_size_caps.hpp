@@ -44,9 +44,11 @@ class TetSizeCaps {
 public:
     // `outer_quads`: 4 node ids per ring outer quad (SweepResult::outer_quads); `far_size` S;
     // `gradation` the tet step's G (>= 1); `surface_growth` g (> 0). Throws tubemesh::Error
-    // for a G below 1 or a g not positive.
+    // for a G below 1 or a g not positive. `quad_scale` (SweepResult::outer_quad_scale, may be
+    // empty): a quad over a ring thinned to that share of St asks for that share of its mean
+    // edge, the size of the thin gap in front of it.
     TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_quads, double far_size, double gradation,
-                double surface_growth);
+                double surface_growth, std::span<const double> quad_scale = {});
     ~TetSizeCaps();
     TetSizeCaps(const TetSizeCaps&) = delete;
     TetSizeCaps& operator=(const TetSizeCaps&) = delete;

@@ -174,7 +174,7 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     if (result.stats.fronts == 0) return result;
 
     std::unique_ptr<IdealApexes> apexes;
-    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt, &apexes);
+    const std::vector<Front> fronts = make_fronts(mesh, in.front_quads, in.boundary_triangles, opt, &apexes, in.front_scale);
     const Adjacency neighbours = front_neighbours(fronts, apexes.get());
     apexes.reset();
     const std::vector<Box> boxes = fixed_face_boxes(mesh, in);

@@ -52,6 +52,10 @@ struct PyramidInput {
     std::span<const index_t> obstacle_quads;
     // Region id (index into mesh.region_names) given to the new pyramids.
     index_t region = kNoIndex;
+    // Per front quad, its ring's thickness there over St (SweepResult::outer_quad_scale), or
+    // empty. Below 1 the front's ideal apex is lowered by that share (a thin ring has a thin
+    // gap in front of it) and its quality floor follows the lowered apex, not the paper's.
+    std::span<const double> front_scale;
 };
 
 struct PyramidOptions {

@@ -251,7 +251,7 @@ Thresholds Thresholds::at(const Front& f, const PyramidOptions& opt, double rate
     Thresholds t;
     const double degrees = opt.max_angle_degrees / rate;
     t.cos_max_angle = degrees >= 90.0 ? 0.0 : std::cos(degrees * std::numbers::pi / 180.0);
-    const double d = opt.distance_factor * f.h * rate;
+    const double d = opt.distance_factor * f.spacing * rate;
     t.min_distance2 = d * d;
     return t;
 }

@@ -21,7 +21,7 @@ std::string where(const Vec3& p) {
 }
 
 Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const BoundaryEdges& boundary,
-                 const PyramidOptions& opt, double scale = 1.0) {
+                 const PyramidOptions& opt, double scale = 1.0, bool thin_ring = false) {
     Front f;
     for (int k = 0; k < 4; ++k) {
         f.node[k] = q[k];
@@ -40,6 +40,7 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
                     " is degenerate (zero area); the ring's outer quads must be proper quadrilaterals");
     f.normal = (1.0 / length) * area;
     f.height = opt.height_factor * f.h;
+    f.spacing = f.h;
     f.shift = {0, 0, 0};
     f.ideal = f.centroid + f.height * f.normal;
     const double ideal_quality = pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], f.ideal});
@@ -63,6 +64,12 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
         f.height *= scale;
         f.ideal = f.centroid + f.height * f.normal;
         f.lowered = true;
+        // Over a thin ring the gap ahead is thin too: a flat pyramid is the one that fits, so
+        // the floor is the lowered apex's, not the paper's.
+        if (thin_ring) f.spacing = scale * f.h;
+        if (thin_ring)
+            f.quality_floor = std::min(opt.min_quality, opt.min_quality_ratio * pyramid_scaled_jacobian(
+                                                                                  {c[0], c[1], c[2], c[3], f.ideal}));
     } else {
         const ApexPlacement apex = place_apex(mesh, q, f.centroid, f.normal, f.h, boundary, opt, opt.wedge_max_shift);
         if (usable(apex)) {
@@ -166,20 +173,25 @@ std::vector<double> IdealApexes::coordinate(std::span<const Front> fronts, doubl
 
 std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
                                std::span<const index_t> boundary_triangles, const PyramidOptions& opt,
-                               std::unique_ptr<IdealApexes>* apexes) {
+                               std::unique_ptr<IdealApexes>* apexes, std::span<const double> room) {
     // Without wedge placement nobody asks which quad edges lie on a boundary triangle.
     const BoundaryEdges boundary(opt.wedge_degrees > 0 ? boundary_triangles : std::span<const index_t>{});
     const std::size_t n = quads.size() / 4;
     std::vector<Front> fronts(n);
+    const auto room_of = [&](std::size_t i) { return i < room.size() ? std::min(room[i], 1.0) : 1.0; };
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt);
+        const double thin = room_of(i);
+        fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt, thin, thin < 1.0);
     });
     // Facing fronts lowered together (PyramidOptions::apart_factor).
     auto index = std::make_unique<IdealApexes>(fronts);
     const std::vector<double> scale = apart_scales(fronts, *index, opt);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-        if (scale[i] < 1.0)
-            fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt, scale[i]);
+        if (scale[i] < 1.0) {
+            const double thin = room_of(i);
+            fronts[i] = make_front(mesh, quads.data() + 4 * i, static_cast<index_t>(i), boundary, opt,
+                                   thin * scale[i], thin < 1.0);
+        }
     });
     if (apexes) {
         const bool lowered = std::any_of(scale.begin(), scale.end(), [](double l) { return l < 1.0; });

@@ -50,6 +50,9 @@ struct alignas(64) Front {
     Vec3 wide;
     bool wedge = false;    // N was placed to open a wedge (wedge.hpp), not the paper's
     bool lowered = false;  // N was lowered for a facing front (PyramidOptions::apart_factor)
+    // What the distance thresholds are relative to: h, or over a thin ring (front_scale) its
+    // share of h, the gap ahead being that much thinner.
+    double spacing = 0;
 };
 
 // The front has a second apex to try (Front::wide).
@@ -68,9 +71,11 @@ struct IdealApexes {
 // Throws tubemesh::Error for a degenerate quad (zero area or zero edge length).
 // boundary_triangles (3 ids each) tell which quad edges lie on a boundary face. With `apexes`,
 // also the index of the fronts' ideal apexes (the one the lowering used when it lowered none).
+// `room` (PyramidInput::front_scale): per quad, the share of the paper's apex height there is
+// room for; empty or 1: all of it.
 std::vector<Front> make_fronts(const HybridMesh& mesh, std::span<const index_t> quads,
                                std::span<const index_t> boundary_triangles, const PyramidOptions& opt,
-                               std::unique_ptr<IdealApexes>* apexes = nullptr);
+                               std::unique_ptr<IdealApexes>* apexes = nullptr, std::span<const double> room = {});
 
 // Compressed rows: row i is items[offset[i] .. offset[i+1]).
 struct Adjacency {

@@ -46,7 +46,7 @@ std::vector<WallStart> node0_feet(const TubePlan& plan) {
 }
 
 double place_stations(const TubePlan& plan, int first, int last, std::span<const WallStart> node0,
-                      std::span<Vec3> nodes) {
+                      std::span<Vec3> nodes, std::span<double> scales) {
     const std::size_t n = static_cast<std::size_t>(plan.n);
     const std::size_t per_station = (static_cast<std::size_t>(plan.layers) + 1) * n;
     std::vector<WallCursor> cursor(n);
@@ -54,12 +54,11 @@ double place_stations(const TubePlan& plan, int first, int last, std::span<const
     const auto& depth1 = plan.ends[1].depth;
     double correction = 0;
     for (int i = first; i < last; ++i) {
-        if (i == 0) {
-            copy_end(plan, 0, i, nodes);
-            continue;
-        }
-        if (i == plan.stations() - 1) {
-            copy_end(plan, 1, i, nodes);
+        if (i == 0 || i == plan.stations() - 1) {
+            const int e = i == 0 ? 0 : 1;
+            copy_end(plan, e, i, nodes);
+            if (!scales.empty())
+                std::copy(plan.end_scale[e].begin(), plan.end_scale[e].end(), scales.begin() + i * static_cast<std::ptrdiff_t>(n));
             continue;
         }
         const Station& st = plan.line.stations[static_cast<std::size_t>(i)];
@@ -80,9 +79,12 @@ double place_stations(const TubePlan& plan, int first, int last, std::span<const
             }
             correction = std::max(correction, foot.distance);
             out[k] = foot.point;
+            const double thin = plan.scale(st.s, dir);
+            if (!scales.empty()) scales[static_cast<std::size_t>(i) * n + k] = thin;
             for (std::size_t j = 1; j <= static_cast<std::size_t>(plan.layers); ++j) {
                 const double depth = w0 * depth0[j * n + k] + w1 * depth1[j * n + k] - wall_depth;
-                out[j * n + k] = foot.point + plan.offsets[j] * dir + depth * st.tangent;
+                const double offset = thin < 1.0 ? thin * plan.offsets[j] : plan.offsets[j];
+                out[j * n + k] = foot.point + offset * dir + depth * st.tangent;
             }
         }
     }

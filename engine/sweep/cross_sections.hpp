@@ -19,8 +19,10 @@ struct WallStart {
     WallFoot foot;
     WallCursor cursor;  // after the projection
 };
+// `scales` (the tube's stations·n entries, or empty): where node column (i, k)'s share of the
+// offsets goes (TubePlan::scale; 1 where the ring is full).
 double place_stations(const TubePlan& plan, int first, int last, std::span<const WallStart> node0,
-                      std::span<Vec3> nodes);
+                      std::span<Vec3> nodes, std::span<double> scales = {});
 
 // Node 0's wall foot at every station but the two ends (index = station), found by following
 // node 0 along the tube from station 1, each foot the hint for the next. One hinted projection

@@ -124,7 +124,7 @@ int ring_turn(const EndSection& section, const char* which) {
 }
 
 void place_on_host(EndSection& section, const Station& station, const SurfaceMap& host,
-                   std::span<const double> offsets, double scale) {
+                   std::span<const double> offsets, double scale, std::span<const double> node_scale) {
     const std::size_t n = section.angle.size();
     const std::size_t layers = offsets.size() - 1;
     section.node.resize((layers + 1) * n);
@@ -140,8 +140,10 @@ void place_on_host(EndSection& section, const Station& station, const SurfaceMap
         const Vec3 dir = std::cos(a) * station.reference + std::sin(a) * binormal;
         std::optional<Uv> hint = wall.uv;
         double depth = section.depth[k];
+        const double thin = k < node_scale.size() ? node_scale[k] : 1.0;
         for (std::size_t j = 1; j <= layers; ++j) {
-            const Vec3 origin = station.centre + (section.radius[k] + offsets[j]) * dir;
+            const double offset = thin < 1.0 ? thin * offsets[j] : offsets[j];
+            const Vec3 origin = station.centre + (section.radius[k] + offset) * dir;
             const HostHit hit = hit_host(host, origin, station.tangent, depth, hint, scale);
             section.node[j * n + k] = hit.point;
             section.uv[j * n + k] = hit.uv;

@@ -44,9 +44,11 @@ int ring_turn(const EndSection& section, const char* which);
 // edges parallel to the axis are the best the end hexes can have: at a wall node the hex's
 // lateral edge lies in the wall, so its corner's scaled Jacobian is at most cos α for a host
 // met at angle α whatever the outer nodes do, and axis-parallel edges reach that bound.
+// `node_scale` (per k, may be empty): column k's offsets are multiplied by it where it is below 1
+// (a ring thinner there, RingRoom).
 // Throws tubemesh::Error when the host has no foot point or is within 6 degrees of parallel
 // to the axis.
 void place_on_host(EndSection& section, const Station& station, const SurfaceMap& host,
-                   std::span<const double> offsets, double scale);
+                   std::span<const double> offsets, double scale, std::span<const double> node_scale = {});
 
 }  // namespace tubemesh::sweep

@@ -58,6 +58,30 @@ void rethrow_first(const std::vector<std::exception_ptr>& failed, TubeOf tube_of
     }
 }
 
+// Every ring's thickness range, and each outer quad's share of St (the mean of its four node
+// columns') when some ring is thinner than St somewhere.
+void local_thickness(const std::vector<TubePlan>& plans, const std::vector<std::vector<double>>& scales,
+                     SweepResult& result) {
+    const bool any = std::any_of(scales.begin(), scales.end(), [](const auto& v) { return !v.empty(); });
+    if (any) result.outer_quad_scale.assign(result.outer_quads.size() / 4, 1.0);
+    for (std::size_t t = 0; t < plans.size(); ++t) {
+        TubeRing& ring = result.rings[t];
+        ring.thinnest = ring.thickest = plans[t].sweep_size;
+        const std::vector<double>& s = scales[t];
+        if (s.empty()) continue;
+        const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+        ring.thinnest = *lo * plans[t].sweep_size;
+        ring.thickest = *hi * plans[t].sweep_size;
+        const std::size_t n = ring.circumferential;
+        for (std::size_t i = 0; i + 1 < ring.stations; ++i)
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::size_t k1 = (k + 1) % n;
+                result.outer_quad_scale[ring.first_lateral_quad + i * n + k] =
+                    0.25 * (s[i * n + k] + s[i * n + k1] + s[(i + 1) * n + k] + s[(i + 1) * n + k1]);
+            }
+    }
+}
+
 }  // namespace
 
 SweepResult sweep_tubes(HybridMesh& mesh, const std::vector<TubeData>& tubes, const SurfaceLookup& surfaces,
@@ -81,12 +105,17 @@ SweepResult sweep_tubes(HybridMesh& mesh, const std::vector<TubeData>& tubes, co
     std::vector<std::vector<sweep::WallStart>> node0(tubes.size());
     rethrow_first(for_each_guarded(tubes.size(), [&](std::size_t t) { node0[t] = sweep::node0_feet(plans[t]); }),
                   [](std::size_t t) { return t; }, tubes);
+    // Each node column's share of St, for the tubes whose ring is thinner somewhere.
+    std::vector<std::vector<double>> scales(tubes.size());
+    for (std::size_t t = 0; t < tubes.size(); ++t)
+        if (plans[t].thin) scales[t].assign(static_cast<std::size_t>(plans[t].stations()) * plans[t].n, 1.0);
     std::vector<double> correction(chunks.size(), 0.0);
     rethrow_first(for_each_guarded(chunks.size(),
                                    [&](std::size_t c) {
                                        const sweep::StationChunk& ch = chunks[c];
                                        correction[c] = sweep::place_stations(plans[ch.tube], ch.first, ch.last,
-                                                                             node0[ch.tube], nodes[ch.tube]);
+                                                                             node0[ch.tube], nodes[ch.tube],
+                                                                             scales[ch.tube]);
                                    }),
                   tube_of_chunk, tubes);
 
@@ -116,6 +145,7 @@ SweepResult sweep_tubes(HybridMesh& mesh, const std::vector<TubeData>& tubes, co
     // 4. Into the mesh, in tube order.
     SweepResult result = sweep::merge_rings(mesh, tubes, plans, nodes, quality, chunks, options);
     result.stats.max_wall_correction = max_correction;
+    local_thickness(plans, scales, result);
     return result;
 }
 

@@ -123,6 +123,9 @@ struct TubeRing {
     index_t radial_layers = 0;    // L
     index_t stations = 0;         // m + 1: m hex layers along the tube
     double sweep_size = 0;        // St used
+    // Thinnest and thickest the ring is anywhere (TubeData::room thins it where it must):
+    // both St for a ring of full thickness.
+    double thinnest = 0, thickest = 0;
     double axial_step = 0;        // centre-line arc length between stations
     double twist = 0;             // radians spread along the tube (see the file comment)
     bool frame_fallback = false;  // rotation-minimising frames replaced the references
@@ -177,6 +180,9 @@ struct SweepResult {
     std::vector<index_t> wall_quads;
     // End quads on the host faces: normal out of the solid. The pyramids' obstacle quads.
     std::vector<index_t> end_quads;
+    // Per outer quad, the ring's thickness under it over St (the mean of its corners'), when
+    // some ring is thinner than St somewhere; empty when every ring has its full St.
+    std::vector<double> outer_quad_scale;
     SweepStats stats;
 };
 

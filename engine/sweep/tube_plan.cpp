@@ -6,8 +6,10 @@
 #include <string>
 
 #include "engine/core/types.hpp"
+#include "engine/mesh/vec3_ops.hpp"
 #include "engine/sweep/frames.hpp"
 #include "engine/sweep/ring_dimensions.hpp"
+#include "engine/sweep/ring_room.hpp"
 
 namespace tubemesh::sweep {
 namespace {
@@ -72,6 +74,10 @@ double TubePlan::angle(int k, double s) const {
     return base[kk] + twist * (s / line.length) + weight(0, s) * angle_offset[0][kk] + weight(1, s) * angle_offset[1][kk];
 }
 
+double TubePlan::scale(double s, const Vec3& dir) const {
+    return thin ? room_scale(*room, sweep_size, s, dir) : 1.0;
+}
+
 TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& surfaces, const SweepOptions& options) {
     check_options(options);
     if (tube.stations.size() < 2) throw Error("its centre line has fewer than two stations");
@@ -117,9 +123,21 @@ TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& sur
         p.angle_offset[1].push_back(wrap_angle(p.ends[1].angle[kk] - p.base[kk] - p.twist));
     }
 
+    p.room = &tube.room;
+    p.thin = thinnest(tube.room) < p.sweep_size;
+    for (int e = 0; e < 2; ++e) {
+        const Station& st = e == 0 ? first : last;
+        const EndSection& end = p.ends[static_cast<std::size_t>(e)];
+        const Vec3 binormal = cross(st.tangent, st.reference);
+        for (int k = 0; k < p.n; ++k) {
+            const double a = end.angle[static_cast<std::size_t>(k)];
+            p.end_scale[static_cast<std::size_t>(e)].push_back(
+                p.scale(st.s, std::cos(a) * st.reference + std::sin(a) * binormal));
+        }
+    }
     const double scale = p.radius + p.sweep_size;
-    place_on_host(p.ends[0], first, *p.hosts[0], p.offsets, scale);
-    place_on_host(p.ends[1], last, *p.hosts[1], p.offsets, scale);
+    place_on_host(p.ends[0], first, *p.hosts[0], p.offsets, scale, p.end_scale[0]);
+    place_on_host(p.ends[1], last, *p.hosts[1], p.offsets, scale, p.end_scale[1]);
 
     const double spacing = p.line.length / (p.stations() - 1);
     for (int e = 0; e < 2; ++e) {

@@ -26,6 +26,12 @@ struct TubePlan {
     std::array<EndSection, 2> ends;  // at the first and the last station
     std::array<const SurfaceMap*, 2> hosts{};
     WallProjection wall;  // onto the tube's wall faces
+    // Where the ring is thinner than St (TubeData::room); `thin` says whether it is anywhere:
+    // without, every node keeps the full offsets and the computation is the paper's.
+    const RingRoom* room = nullptr;
+    bool thin = false;
+    // Per end, per ring node k: the share of the offsets its column has there (1: full).
+    std::array<std::vector<double>, 2> end_scale;
 
     // Angle of node k about the tangent from the reference: base[k] + twist·s/length + the
     // ends' offsets from even spacing, each faded by its end's weight.
@@ -37,6 +43,8 @@ struct TubePlan {
     // 1 at end e's station, falling linearly to 0 at `blend[e]` from it.
     double weight(int e, double s) const;
     double angle(int k, double s) const;
+    // The share of St the ring may take at arc length s in direction dir: 1 unless `thin`.
+    double scale(double s, const Vec3& dir) const;
     int stations() const { return static_cast<int>(line.stations.size()); }
 };
 

@@ -8,6 +8,7 @@
 #include "engine/core/types.hpp"
 #include "engine/sweep/sweep.hpp"
 #include "geom/sizing/discretize_edges.hpp"
+#include "geom/sizing/ring_room.hpp"
 #include "geom/tubes/tubes_axis.hpp"
 #include "geom/tubes/tubes_topology.hpp"
 #include "geom/tubes/tubes_wall.hpp"
@@ -80,8 +81,11 @@ DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tub
     out.size = plan.size;
     out.sweep_size = plan.sweep_size;
     std::set<int> tube_edges;
+    const std::vector<RingRoom> rooms =
+        plan.local_ring ? ring_rooms(model, tubes, plan.sweep_size) : std::vector<RingRoom>(tubes.size());
     for (const TubeInfo& info : tubes) {
         out.tubes.push_back(discretize_tube(index, info, plan.sweep_size, options.ring_nodes));
+        out.tubes.back().room = rooms[out.tubes.size() - 1];
         for (int f : info.faces)
             for (const FaceWire& w : index.face_wires[f])
                 for (const LoopEdge& e : w.edges) tube_edges.insert(e.edge);

@@ -72,10 +72,10 @@ Extremes extremes(const std::vector<TubeInfo>& tubes) {
 }
 
 void apply_rules(SizePlan& plan, const Clearances& c, const Extremes& e) {
-    if (plan.sweep_size > 1.4 * c.dcb)
+    if (!plan.local_ring && plan.sweep_size > 1.4 * c.dcb)
         change(plan, "1: St > 1.4 Dcb", 1.4 * c.dcb,
                tube_name(c.dcb_tube) + " is " + fmt(c.dcb) + " from face " + std::to_string(c.dcb_face));
-    if (plan.sweep_size > 0.6 * c.dc)
+    if (!plan.local_ring && plan.sweep_size > 0.6 * c.dc)
         change(plan, "2: St > 0.6 Dc", 0.6 * c.dc,
                tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + " are " + fmt(c.dc) + " apart");
     if (plan.sweep_size > 0.8 * e.rc)
@@ -85,12 +85,12 @@ void apply_rules(SizePlan& plan, const Clearances& c, const Extremes& e) {
 
 void apply_guards(SizePlan& plan, const Clearances& c, const Extremes& e) {
     const double reach = (1 + kPyramidRoom) * plan.sweep_size;
-    if (reach >= c.dcb)
+    if (!plan.local_ring && reach >= c.dcb)
         change(plan, "guard: boundary", kGuardMargin * c.dcb / (1 + kPyramidRoom),
                "a ring of thickness St plus the 2.2 St its pyramids need reaches " + fmt(reach) + " from " +
                    tube_name(c.dcb_tube) + ", but face " + std::to_string(c.dcb_face) + " is " + fmt(c.dcb) + " away");
     const double gap = (2 + kPyramidRoom) * plan.sweep_size;
-    if (gap >= c.dc)
+    if (!plan.local_ring && gap >= c.dc)
         change(plan, "guard: rings", kGuardMargin * c.dc / (2 + kPyramidRoom),
                "two rings of thickness St and the 2.2 St their pyramids need take " + fmt(gap) + " between " +
                    tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + ", which are " + fmt(c.dc) + " apart");
@@ -156,6 +156,7 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
     plan.dc_tube_b = c.dc_tube_b;
     plan.dcb_tube = c.dcb_tube;
     plan.dcb_face = c.dcb_face;
+    plan.local_ring = options.local_ring;
     apply_rules(plan, c, e);
     apply_guards(plan, c, e);
     if (options.size <= 0 && !plan.changes.empty()) {

@@ -46,6 +46,11 @@ struct SizingOptions {
     // > 0: the default St is this share of S (given or default), at most 12.5 smallest tube radii,
     // instead of the smallest tube diameter; the rules and guards still cut it. A given St wins.
     double sweep_share = 0;
+    // Rules 1 and 2 and the boundary and rings guards are left to the ring's local thickness
+    // (ring_room.hpp): St stays, and each ring thins only where a face or a tube is near. Off
+    // (default): the paper's one St, cut for the closest place of all. Not yet the default:
+    // two rings facing each other across a thin gap can leave their pyramids no room.
+    bool local_ring = false;
 };
 
 struct SizeChange {
@@ -68,6 +73,8 @@ struct SizePlan {
     int dcb_tube = -1, dcb_face = 0;    // the tube attaining dcb and the face it is near
     double rc = 0;                      // +inf when every tube is straight
     std::vector<SizeChange> changes;    // in the order they were made
+    // The rings thin locally (SizingOptions::local_ring): discretize fills TubeData::room.
+    bool local_ring = false;
     std::vector<std::string> warnings;  // what no size can fix (a bend tighter than the tube)
 };
 

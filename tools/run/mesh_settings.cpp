@@ -56,6 +56,7 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     o.size = s.size.value_or(0);
     o.sweep_size = s.sweep_size.value_or(0);
     o.sweep_share = s.sweep_share;
+    o.local_ring = s.local_ring;
     o.circumferential = s.circumferential.value_or(0);
     o.chordal = s.chordal;
     o.sweep.radial_layers = s.layers;

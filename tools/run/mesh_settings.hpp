@@ -32,6 +32,7 @@ struct MeshSettings {
     std::optional<int> solid;               // which solid of the file, 1-based; automatic: the only one
     Stage until = kLastStage;
     double sweep_share = 0;                 // > 0: automatic St = this share of S (apply_economy)
+    bool local_ring = default_mesh_options().local_ring;
 };
 
 // The economy preset (`--economy`): the paper's own ring, 4 nodes around a pipe in 2 layers, St

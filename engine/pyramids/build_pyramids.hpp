@@ -52,6 +52,8 @@ struct PyramidInput {
     std::span<const index_t> obstacle_quads;
     // Region id (index into mesh.region_names) given to the new pyramids.
     index_t region = kNoIndex;
+    // The rings' thickness St, which a failure's message names with a value to try; 0: not known.
+    double sweep_size = 0;
 };
 
 struct PyramidOptions {

@@ -22,6 +22,16 @@ struct ElementCap {
     double tets_per_pyramid = 0;
 };
 
+// The share of the refined tets the tet step keeps at the least: its relaxation and optimisation
+// removed 2-6 % of them on the presets and the reference cases (3-2 flips and edge removals
+// outnumber 2-3 flips), so 0.8 is a bound with room.
+inline constexpr double kRefinedTetsKept = 0.8;
+
+// Throws tubemesh::Error when, during the tet step's refinement, the elements of `mesh` plus
+// kRefinedTetsKept of the `tets` refined so far exceed cap.limit: the run is stopped before
+// the optimisation, and before its memory runs out.
+void check_refining_tets(const HybridMesh& mesh, double tets, const ElementCap& cap);
+
 // x rounded up to three significant digits: a figure of advice that must not fall short of x.
 double rounded_up(double x);
 

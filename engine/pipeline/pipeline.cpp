@@ -1,6 +1,7 @@
 #include "engine/pipeline/pipeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -241,6 +242,9 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism
     tets::TetStepOptions to = opt.tets;
     to.far_size = tet_far_size(in, opt);
     to.part_done = [&progress] { progress.advance(); };
+    // The refinement is where a run's memory grows most: the cap is checked after each round.
+    if (std::isfinite(in.cap.limit))
+        to.refine.round_done = [&](index_t tets) { check_refining_tets(out.mesh, double(tets), in.cap); };
     out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), par, to);
     const tets::TetStepStats& s = out.tet_stats;
     PhaseReport r{"tets", seconds_since(t0), {}};

@@ -153,9 +153,12 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         holes = hole_groups(model, p.tubes, p.plan.size);
         diagnose_hole_clearances(measure_hole_clearances(model, holes));
         p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
+        // A limit in elements caps the real counts too. The memory's worth does not: the bytes an
+        // element takes vary from run to run, and a run that fits in memory is not refused.
         const ElementEstimate& e = p.estimate;
-        p.cap = {element_limit(options.budget), element_limit_text(options.budget), e.tets, e.triangles, e.hexes,
-                 e.pyramids, e.quads, kTetsPerRingQuadAtLeast};
+        if (options.budget.max_elements > 0)
+            p.cap = {element_limit(options.budget), element_limit_text(options.budget), e.tets, e.triangles, e.hexes,
+                     e.pyramids, e.quads, kTetsPerRingQuadAtLeast};
         progress.finish();
     }
     PhaseReport sizes{"sizes", seconds_since(t0), {{"rule changes", double(p.plan.changes.size())}}, {}};

@@ -3,7 +3,9 @@
 // (geom/sizing/element_budget.hpp) is a lower bound and runs 1-4x under the real counts, so
 // after each stage the pipeline adds the elements made so far to the estimate of the stages
 // still to come, and stops as soon as that exceeds the limit: a run over the cap is refused
-// before its costliest stage where the counts allow, and never returns a mesh over it.
+// before its costliest stage where the counts allow, and never returns a mesh over it. Only a
+// limit given in elements (--max-elements) is a cap: the default, the memory's worth at a
+// guessed size per element, refuses estimates, and a run out of memory ends with bad_alloc.
 // Elements are cells and boundary faces, as a mesh file counts them.
 #include <cmath>
 #include <string>

@@ -126,8 +126,8 @@ struct MeshOptions {
     unsigned tet_parts = 2;
     // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
     // from the solid's volume and area, S, St and the tubes' length (geom/sizing/element_budget.hpp).
-    // 0 (default): what the memory this process may use holds (at 150 bytes per element). The
-    // same limit caps the real counts after each stage (element_cap.hpp).
+    // 0 (default): what the memory this process may use holds (at 150 bytes per element). A
+    // given limit also caps the real counts, after each stage and refinement round (element_cap.hpp).
     double max_elements = 0;
     // That memory; bytes 0 (default): usable_memory() (engine/core/usable_memory.hpp) when the
     // run starts. A caller that lowers its own address-space limit reads it first.

@@ -111,13 +111,15 @@ ElementEstimate check_element_budget(double volume, double area, const std::vect
                     "(hexes {:.3g}, pyramids {:.3g}, their faces and the tets around them), more than {}",
                     e.total(), rings, e.hexes, e.pyramids, limit_text);
     const std::string or_more_elements =
-        fmt::format("give --max-elements {:.3g} or more (the run needs at least that many)", rounded_up(e.total()));
+        fmt::format("give --max-elements {:.3g} or more (the run needs at least that many){}", rounded_up(e.total()),
+                    budget.max_elements > 0 ? "" : ", if the memory holds them");
     if (context.ring_nodes > 0)
         throw Error(fmt::format("--circ {} puts too many nodes around the tubes ({:.6g} long in all, {}): {}; give a "
                                 "smaller --circ or leave it out, or {}",
                                 context.ring_nodes, tube_length(tubes), context.extent, what, or_more_elements));
 
-    // A larger St, if the rules accept one that fits (at the same S, or at a larger given one).
+    // A larger St, if the rules accept one that fits: a given S stays (St at most S / 1.3, the
+    // default's ratio), a default S grows with St.
     const double sweep_cap = context.size_source == "user" ? std::min(context.largest_sweep_size, size / 1.3)
                                                            : context.largest_sweep_size;
     const auto fits_at_sweep = [&](double st) {

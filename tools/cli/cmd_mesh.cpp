@@ -191,7 +191,7 @@ Command add_mesh_command(CLI::App& app) {
                         "Refuse sizes that give more elements (cells and boundary faces) than this: before meshing on "
                         "a lower bound from the volume, area, S, St and tube lengths, then after each stage on the "
                         "real counts so far; no mesh over it is written (default: what the memory this process may "
-                        "use holds: physical, ulimit -v or cgroup limit)")
+                        "use holds, physical, ulimit -v or cgroup limit, checked on the lower bound only)")
             ->check(positive_number());
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
     cmd->add_option("--html", args->html,

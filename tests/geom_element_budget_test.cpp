@@ -166,15 +166,15 @@ TEST(ElementBudget, AddressSpaceLimitBindsTheDefaultBudget) {
     EXPECT_DOUBLE_EQ(limit, cap / geom::kBytesPerElementAtLeast);
 }
 
-// The budget caps the real counts, not only the estimate: the crankshaft at S = 23 passes the
-// estimate for 8000 elements and makes about 2e4. At each limit the run either returns a mesh
-// within it or is refused, as soon as the counts so far and the estimate of the stages left
-// exceed it.
+// The budget caps the real counts, not only the estimate: the crankshaft at S = 25 passes the
+// estimate for 8000 elements (6.5e3) and makes about 1.6e4. At each limit the run either
+// returns a mesh within it or is refused, as soon as the counts so far and the estimate of the
+// stages left exceed it.
 TEST(ElementCap, RunsAreRefusedOnTheirRealCountsAndNeverReturnMoreThanTheLimit) {
     const geom::BuiltBlock block = geom::build_block(geom::preset_spec("paper-ex3"));
     const auto run = [&](double max_elements) {
         MeshOptions mo;
-        mo.size = 23;
+        mo.size = 25;
         mo.max_elements = max_elements;
         const geom::PreparedModel p = geom::prepare_model(block.model, geom::prepare_options(mo));
         return run_pipeline(p.pipeline_input(), mo);
@@ -187,8 +187,8 @@ TEST(ElementCap, RunsAreRefusedOnTheirRealCountsAndNeverReturnMoreThanTheLimit) 
     EXPECT_NE(early.find("stopped before meshing further"), std::string::npos) << early;
     EXPECT_NE(early.find("more than --max-elements 8e+03"), std::string::npos) << early;
 
-    // Past the stages' checks (about 1.1e4 with the estimate of the tets) but below what the
-    // refinement holds on its way to about 1.55e4 tets: stopped there, before the optimisation.
+    // Past the stages' checks (about 9e3 with the estimate of the tets) but below what the
+    // refinement holds on its way to about 1.3e4 tets: stopped there, before the optimisation.
     const std::string refining = tubemesh::testing::error_of([&] { run(12000); });
     EXPECT_NE(refining.find("while refining the tets: the mesh has "), std::string::npos) << refining;
 

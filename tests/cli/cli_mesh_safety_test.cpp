@@ -166,12 +166,12 @@ TEST_F(CliMeshSafety, OutOfMemoryEndsWithAMessage) {
     EXPECT_TRUE(names_in(dir.path()).empty());
 }
 
-// --max-elements caps what is written: the crankshaft at --size 23 passes the estimate for
-// 8000 elements and would make about 2e4; the run stops at a stage's end with the counts so
-// far, exit 2, and no file.
+// --max-elements caps what is written: the crankshaft at --size 25 passes the estimate for
+// 8000 elements (6.5e3) and would make about 1.6e4; the run stops at a stage's end with the
+// counts so far, exit 2, and no file.
 TEST_F(CliMeshSafety, MaxElementsCapsTheRealCounts) {
     const fs::path in = tubemesh::testing::built_preset(dir.path(), "paper-ex3");
-    const auto r = run_command(cli() + " mesh " + q(in) + " --size 23 --max-elements 8000 --quiet -o " +
+    const auto r = run_command(cli() + " mesh " + q(in) + " --size 25 --max-elements 8000 --quiet -o " +
                                q(dir / "out.msh"));
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("stage the mesh has "), std::string::npos) << r.err;

@@ -36,9 +36,9 @@ void refuse_contradictory_sizes(const SizePlan& plan, const SizingOptions& given
     if (given.sweep_size > 0 && plan.sweep_size < given.sweep_size && !plan.changes.empty()) {
         const SizeChange& c = plan.changes.front();
         throw Error(fmt::format(
-            "the sweep size St = {:.6g} is too large for this model: rule {} ({}); give St = {:.6g} or less, or "
+            "the sweep size St = {:.6g} is too large for this model: {} ({}); give St = {:.6g} or less, or "
             "leave St out to let tubemesh choose",
-            given.sweep_size, c.rule, c.reason, plan.sweep_size));
+            given.sweep_size, sizing_rule_name(c.rule), c.reason, plan.sweep_size));
     }
     if (!(plan.sweep_size < plan.size))
         throw Error(fmt::format("contradictory sizes: the sweep size St = {:.6g} ({}) must be smaller than the mesh "

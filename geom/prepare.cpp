@@ -37,9 +37,9 @@ void refuse_contradictory_sizes(const SizePlan& plan, const SizingOptions& given
     if (given.sweep_size > 0 && plan.sweep_size < given.sweep_size && !plan.changes.empty()) {
         const SizeChange& c = plan.changes.front();
         throw Error(fmt::format(
-            "the sweep size St = {:.6g} is too large for this model: rule {} ({}); give St = {:.6g} or less, or "
+            "the sweep size St = {:.6g} is too large for this model: {} ({}); give St = {:.6g} or less, or "
             "leave St out to let tubemesh choose",
-            given.sweep_size, c.rule, c.reason, plan.sweep_size));
+            given.sweep_size, sizing_rule_name(c.rule), c.reason, plan.sweep_size));
     }
     if (!(plan.sweep_size < plan.size))
         throw Error(fmt::format("contradictory sizes: the sweep size St = {:.6g} ({}) must be smaller than the mesh "
@@ -61,8 +61,8 @@ BoundInputs bound_inputs(const Model& model, const TubeSearch& tubes, const Size
     BoundInputs in;
     for (const TubeInfo& t : tubes.tubes) {
         walls.insert(walls.end(), t.faces.begin(), t.faces.end());
-        in.extents.push_back(
-            {t.length, t.radius_max, tube_ring_nodes(t, plan.sweep_size, options.discretize.ring_nodes)});
+        in.extents.push_back({t.length, t.radius_max, tube_ring_nodes(t, plan.sweep_size, options.discretize.ring_nodes),
+                              (t.radius_min + t.radius_max) / 2});
     }
     in.measures = rough_measures(model, walls);
     return in;
@@ -77,10 +77,16 @@ ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes
                                 options.budget.max_elements));
     const BoundInputs in = bound_inputs(model, tubes, plan, options);
     const BoundingBox b = non_wall_box(model, tubes.tubes);
-    const BudgetContext context{plan.size_source, plan.sweep_source,
+    // A St the rules cut is no longer the default's: name the rule that set it.
+    const std::string sweep_source =
+        plan.changes.empty() ? plan.sweep_source : plan.sweep_source + ", cut by " + sizing_rule_name(plan.changes.back().rule);
+    const BudgetContext context{plan.size_source,
+                                sweep_source,
                                 fmt::format("{:.6g} x {:.6g} x {:.6g} {}", b.max.x - b.min.x, b.max.y - b.min.y,
                                             b.max.z - b.min.z, model.report().length_unit),
-                                options.discretize.ring_nodes};
+                                options.discretize.ring_nodes,
+                                plan.largest_sweep_size,
+                                plan.largest_sweep_limit};
     return check_element_budget(in.measures.volume, in.measures.area, in.extents, plan.size, plan.sweep_size,
                                 options.budget, context);
 }
@@ -120,6 +126,7 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     p.discretize.ring_nodes = options.circumferential;
     p.discretize.chordal = options.chordal;
     p.budget.max_elements = options.max_elements;
+    p.budget.memory = options.memory;
     p.budget.sweep = options.sweep;
     p.progress = options.progress;
     return p;
@@ -150,11 +157,18 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
     {
         PhaseProgress progress(options.progress, "sizes", 1);
         p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
-        refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
+        // Pipes too close for any ring first: no St would help there.
         diagnose_clearances(p.tubes, p.plan);
+        refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
         holes = hole_groups(model, p.tubes, p.plan.size);
         diagnose_hole_clearances(measure_hole_clearances(model, holes));
         p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
+        // A limit in elements caps the real counts too. The memory's worth does not: the bytes an
+        // element takes vary from run to run, and a run that fits in memory is not refused.
+        const ElementEstimate& e = p.estimate;
+        if (options.budget.max_elements > 0)
+            p.cap = {element_limit(options.budget), element_limit_text(options.budget), e.tets, e.triangles, e.hexes,
+                     e.pyramids, e.quads, kTetsPerRingQuadAtLeast};
         progress.finish();
     }
     PhaseReport sizes{"sizes", seconds_since(t0), {{"rule changes", double(p.plan.changes.size())}}, {}};
@@ -211,7 +225,7 @@ PipelineInput PreparedModel::pipeline_input() const {
         if (face == 0 || face > m->size()) return nullptr;
         return (*m)[face - 1].get();
     };
-    return PipelineInput{geometry, std::move(lookup), std::move(faces), gap_sizes};
+    return PipelineInput{geometry, std::move(lookup), std::move(faces), gap_sizes, {}, cap};
 }
 
 std::vector<std::string> PreparedModel::report_lines(int scale_exponent) const {

@@ -41,6 +41,7 @@ public:
     TubeSearch tubes;
     SizePlan plan;
     ElementEstimate estimate;  // the lower bound options.budget was checked on
+    ElementCap cap;            // --max-elements on the real counts (engine/pipeline/element_cap.hpp); none by default
     DiscreteGeometry geometry;
     std::vector<std::unique_ptr<SurfaceMap>> maps;  // element i: face id i + 1
     std::vector<SizeSource> gap_sizes;              // geom/sizing/gap_sizes.hpp

@@ -108,7 +108,7 @@ TubeSearch at_source_scale(TubeSearch found, int k) {
 SizePlan at_source_scale(SizePlan plan, int k) {
     if (k == 0) return plan;
     for (double* l : {&plan.size, &plan.sweep_size, &plan.initial_size, &plan.initial_sweep_size, &plan.dc, &plan.dcb,
-                      &plan.rc})
+                      &plan.rc, &plan.largest_sweep_size})
         *l = from_working(*l, k);
     for (SizeChange& c : plan.changes)
         for (double* l : {&c.old_sweep_size, &c.new_sweep_size, &c.old_size, &c.new_size}) *l = from_working(*l, k);

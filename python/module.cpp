@@ -144,7 +144,7 @@ The options and defaults are `tubemesh mesh`'s (README, "Command line"); None is
 size (S: bounding-box diagonal / 25, at least 1.3 St), sweep_size (St: the smallest tube
 diameter, cut by the paper's rules), circ (n: the multiple of 4 nearest 2 pi (r + St/2) / St, at
 least 8), layers (2), axial_aspect (1.5), chordal (0.008125), threads (all cores), max_elements
-(what this machine's memory holds), solid (the file's only solid); slide_surface=False is
+(what the memory this process may use holds; the real counts are capped too), solid (the file's only solid); slide_surface=False is
 --fixed-surface. economy=True is --economy: the
 paper's ring (circ 4, layers 2, axial_aspect 2, chordal 0.02, St a share of S) where those are None. until: the last stage ('sweep', 'surface', 'pyramids', 'tets'). progress: a callable
 (phase, done, total), called with the GIL from the meshing threads.

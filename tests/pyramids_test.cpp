@@ -641,6 +641,29 @@ TEST(Pyramids, HopelessFrontThrowsAndLeavesTheMeshUnchanged) {
     EXPECT_TRUE(same_mesh(s.mesh, before));
 }
 
+// Given the rings' St, the failure names it and a smaller value to try.
+TEST(Pyramids, HopelessFrontNamesTheSweepSizeAndAValueToTry) {
+    const int segments = 4;
+    const double length = segments * 1.5 * kWidth;
+    BoxGrid box;
+    box.lines[0] = {0, kR + 0.05, 2 * (kR + 0.05), 5};
+    box.lines[1] = {0, 1.5, 3.0, 4.5, 6.0};
+    box.lines[2] = spaced(0, length, 2);
+    RingScene s = scene::build_ring_scene(box, {scene::straight_ring(kR + 0.05, 3.0, 0, length, segments, kR, kPipe)});
+    PyramidInput in{s.front_quads, s.boundary_triangles, s.obstacle_quads, s.pyramid_region};
+    in.sweep_size = kR - kPipe;
+    std::string what;
+    try {
+        build_pyramids(s.mesh, in);
+    } catch (const Error& e) {
+        what = e.what();
+    }
+    EXPECT_NE(what.find("the rings are St = 0.5 thick here; lower it, to --sweep-size 0.25 for a start, or move "
+                        "the pipe"),
+              std::string::npos)
+        << what;
+}
+
 TEST(Pyramids, MalformedInputIsRefused) {
     RingScene s = straight_scene(2, 1.5 * kWidth);
     std::vector<index_t> bad = s.front_quads;

@@ -134,6 +134,8 @@ public:
     // The live store: ghost tets (one vertex kInfiniteVertex) and free slots (vertex[0] ==
     // kFreeSlot) included.
     const TetStore& store() const { return tets_; }
+    // Tets in the store less its free slots (ghosts included, which constrained mode has none of).
+    index_t live_tets() const { return tets_.size() - static_cast<index_t>(free_.size()); }
     const std::vector<std::pair<index_t, index_t>>& duplicates() const { return duplicates_; }
     const KernelCounters& counters() const { return counters_; }
     // Largest number of bytes held by the tet store and point arrays so far.

@@ -1,6 +1,7 @@
 #include "engine/pipeline/pipeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -195,7 +196,7 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     out.phases.push_back(std::move(r));
 }
 
-void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
+void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
     HybridMesh& mesh = out.mesh;
     PhaseProgress progress(opt.progress, "pyramids", out.sweep.outer_quads.size() / 4);
@@ -207,6 +208,7 @@ void run_pyramids(const MeshOptions& opt, PipelineResult& out) {
     in.obstacle_quads = out.sweep.end_quads;
     in.front_scale = out.sweep.outer_quad_scale;
     in.region = mesh.region_id("pyramids");
+    in.sweep_size = opt.sweep.sweep_size > 0 ? opt.sweep.sweep_size : input.geometry.sweep_size;
     PyramidResult p;
     if (!out.sweep.outer_quads.empty()) {
         p = build_pyramids(mesh, in, opt.pyramids);
@@ -241,6 +243,9 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism
     tets::TetStepOptions to = opt.tets;
     to.far_size = tet_far_size(in, opt);
     to.part_done = [&progress] { progress.advance(); };
+    // The refinement is where a run's memory grows most: the cap is checked after each round.
+    if (std::isfinite(in.cap.limit))
+        to.refine.round_done = [&](index_t tets) { check_refining_tets(out.mesh, double(tets), in.cap); };
     out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), par, to);
     const tets::TetStepStats& s = out.tet_stats;
     PhaseReport r{"tets", seconds_since(t0), {}};
@@ -286,17 +291,22 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism
 
 void run_phases(const PipelineInput& input, const MeshOptions& options, const Parallelism& par, Stage until,
                 PipelineResult& out) {
+    // After each stage, the counts so far and the estimate of the stages left against the cap.
+    const auto reach = [&](Stage s) {
+        out.reached = s;
+        check_element_cap(out.mesh, s, until, double(out.sweep.outer_quads.size() / 4), input.cap);
+    };
     run_sweep(input, options, out);
-    out.reached = Stage::Sweep;
+    reach(Stage::Sweep);
     if (until == Stage::Sweep) return;
     run_surface(input, options, out);
-    out.reached = Stage::Surface;
+    reach(Stage::Surface);
     if (until == Stage::Surface) return;
-    run_pyramids(options, out);
-    out.reached = Stage::Pyramids;
+    run_pyramids(input, options, out);
+    reach(Stage::Pyramids);
     if (until == Stage::Pyramids) return;
     run_tets(input, options, par, out);
-    out.reached = Stage::Tets;
+    reach(Stage::Tets);
 }
 
 }  // namespace

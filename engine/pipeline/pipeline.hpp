@@ -46,9 +46,11 @@
 #include "engine/check/mesh_check.hpp"
 #include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
+#include "engine/core/usable_memory.hpp"
 #include "engine/geometry/tube_data.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/mesh_description.hpp"
+#include "engine/pipeline/element_cap.hpp"
 #include "engine/pipeline/progress.hpp"
 #include "engine/pyramids/build_pyramids.hpp"
 #include "engine/quality/quality.hpp"
@@ -128,8 +130,12 @@ struct MeshOptions {
     unsigned tet_parts = 2;
     // Refuse, before meshing, a run whose sizes give more elements than this: a lower bound
     // from the solid's volume and area, S, St and the tubes' length (geom/sizing/element_budget.hpp).
-    // 0 (default): what this machine's memory holds (at 150 bytes per element).
+    // 0 (default): what the memory this process may use holds (at 150 bytes per element). A
+    // given limit also caps the real counts, after each stage and refinement round (element_cap.hpp).
     double max_elements = 0;
+    // That memory; bytes 0 (default): usable_memory() (engine/core/usable_memory.hpp) when the
+    // run starts. A caller that lowers its own address-space limit reads it first.
+    UsableMemory memory;
     // Determinism: the same input and options always give the same mesh, byte for byte, for
     // any thread count (the sweep, surface and pyramid phases by construction, the tet step
     // because its Delaunay passes split into tet_parts parts whatever the thread count;
@@ -160,6 +166,9 @@ struct PipelineInput {
     // made one there right after the sweep (engine/sweep/ring_joins.hpp). The nodes they leave
     // unused stay in the mesh; the caller drops them. Empty for one solid.
     std::vector<RingJoin> ring_joins;
+    // The element budget, checked on the real counts after each stage (element_cap.hpp); none
+    // by default. geom's PreparedModel fills it from its estimate and limit.
+    ElementCap cap;
 };
 
 // One phase of a run: the engine's phases (run_pipeline, the check last) and, before them,

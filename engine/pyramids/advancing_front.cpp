@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace tubemesh::pyramids {
@@ -23,11 +24,13 @@ bool all_in(std::vector<index_t> fronts, std::vector<index_t> among) {
 
 }  // namespace
 
-AdvancingFront::AdvancingFront(const World& world, FrontState& state, const PyramidOptions& opt, PyramidStats& stats)
+AdvancingFront::AdvancingFront(const World& world, FrontState& state, const PyramidOptions& opt, PyramidStats& stats,
+                               double sweep_size)
     : world_(world),
       state_(state),
       opt_(opt),
       stats_(stats),
+      sweep_size_(sweep_size),
       batcher_(static_cast<index_t>(world.fronts.size())),
       choice_(world.fronts.size()) {}
 
@@ -110,6 +113,16 @@ std::vector<index_t> AdvancingFront::draw_back(const std::vector<index_t>& rejec
     return freed;
 }
 
+std::string AdvancingFront::advice() const {
+    if (!(sweep_size_ > 0)) return "lower the sweep size St";
+    // The quads' edges, and the room they need, shrink with St; half leaves the room the criteria ask
+    // for in front of a ring that missed it by up to about half its thickness.
+    char s[160];
+    std::snprintf(s, sizeof s, "the rings are St = %.6g thick here; lower it, to --sweep-size %.3g for a start,",
+                  sweep_size_, 0.5 * sweep_size_);
+    return s;
+}
+
 void AdvancingFront::fail(const std::vector<index_t>& still, int round) const {
     const index_t first = still.front();
     const Front& f = world_.fronts[first];
@@ -123,7 +136,7 @@ void AdvancingFront::fail(const std::vector<index_t>& still, int round) const {
                 " with edge length " + std::to_string(f.h) + ", whose last try node was refused as " +
                 verdict_name(choice_[first].refusal) +
                 ". A ring there is too close to another ring or to a face for its quad size (the criteria need "
-                "about 1.2 edge lengths of room in front of a quad): lower the sweep size St or move the pipe");
+                "about 1.2 edge lengths of room in front of a quad): " + advice() + " or move the pipe");
 }
 
 void AdvancingFront::note_batch(index_t size) {

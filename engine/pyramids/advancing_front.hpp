@@ -7,6 +7,7 @@
 // parallel against the state it started from, then committed front by front in batch order.
 #include <tbb/enumerable_thread_specific.h>
 
+#include <string>
 #include <vector>
 
 #include "engine/pyramids/batches.hpp"
@@ -20,7 +21,9 @@ namespace tubemesh::pyramids {
 class AdvancingFront {
 public:
     // `state` is world.state, writable: only the commits between batches change it.
-    AdvancingFront(const World& world, FrontState& state, const PyramidOptions& opt, PyramidStats& stats);
+    // `sweep_size`: the rings' St, named in the failure's advice (0: not known).
+    AdvancingFront(const World& world, FrontState& state, const PyramidOptions& opt, PyramidStats& stats,
+                   double sweep_size = 0);
 
     // Puts a pyramid on every front, or throws tubemesh::Error naming the first front that
     // found none after opt.max_drawback_rounds drawbacks (or when a drawback frees nothing
@@ -33,6 +36,7 @@ public:
 private:
     std::vector<index_t> pass(const std::vector<index_t>& order, Pass kind);
     std::vector<index_t> draw_back(const std::vector<index_t>& rejected);
+    std::string advice() const;  // what the failure message tells the user to change
     [[noreturn]] void fail(const std::vector<index_t>& still, int round) const;
     void note_batch(index_t size);
 
@@ -40,6 +44,7 @@ private:
     FrontState& state_;
     const PyramidOptions& opt_;
     PyramidStats& stats_;
+    double sweep_size_;
     Batcher batcher_;
     Adjacency batches_;
     std::vector<Choice> choice_;  // per front: the outcome of its latest evaluation

@@ -183,7 +183,7 @@ PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const Pyr
     const World world{fronts, neighbours, face_tree, static_cast<index_t>(in.boundary_triangles.size() / 3),
                       in.obstacle_quads, state};
 
-    AdvancingFront advance(world, state, opt, result.stats);
+    AdvancingFront advance(world, state, opt, result.stats, in.sweep_size);
     advance.run();
     result.stats.verdicts = advance.tally().verdicts;
     if (result.stats.batches > 0) result.stats.batch_mean /= result.stats.batches;

@@ -56,6 +56,8 @@ struct PyramidInput {
     // empty. Below 1 the front's ideal apex is lowered by that share (a thin ring has a thin
     // gap in front of it) and its quality floor follows the lowered apex, not the paper's.
     std::span<const double> front_scale;
+    // The rings' thickness St, which a failure's message names with a value to try; 0: not known.
+    double sweep_size = 0;
 };
 
 struct PyramidOptions {

@@ -18,10 +18,15 @@
 //   hexes      >= n L (floor(len / step) - 1), pyramids a 1/L of it: the ring's axial step
 //                                  (engine/sweep/ring_dimensions.hpp) at the tube's largest radius;
 //                                  bends only shorten it
+//   quads      >= a wall quad per pyramid + 2 n L end quads per tube
+// Being a lower bound, it cannot promise a run fits: the pipeline checks the real counts after
+// each stage against the same limit (engine/pipeline/element_cap.hpp).
 // No OpenCASCADE header here.
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "engine/core/usable_memory.hpp"
 #include "engine/sweep/sweep.hpp"
 
 namespace tubemesh::geom {
@@ -35,22 +40,27 @@ inline constexpr double kBytesPerElementAtLeast = 150;
 inline constexpr double kTetsPerRingQuadAtLeast = 8;
 
 struct ElementBudget {
-    // Refuse a run whose lower bound exceeds this many elements. 0 (default): what this
-    // machine's physical memory holds at kBytesPerElementAtLeast per element.
+    // Refuse a run whose lower bound exceeds this many elements. 0 (default): what the memory
+    // this process may use holds at kBytesPerElementAtLeast per element.
     double max_elements = 0;
+    // That memory; bytes 0 (default): usable_memory() when the limit is asked for. The CLI reads
+    // it before it lowers its own address-space limit.
+    UsableMemory memory;
     // The run's hex ring options (layers L, grading, axial aspect, condition cap), for the hexes.
     SweepOptions sweep;
 };
 
 struct TubeExtent {
-    double length = 0;   // of the centre line
-    double radius = 0;   // the largest: the longest axial step
-    int ring_nodes = 0;  // n around it
+    double length = 0;       // of the centre line
+    double radius = 0;       // the largest: the longest axial step
+    int ring_nodes = 0;      // n around it
+    double mean_radius = 0;  // what n follows from when St changes and n was not given
 };
 
+// Elements are cells and boundary faces, as a mesh file counts them.
 struct ElementEstimate {
-    double tets = 0, triangles = 0, hexes = 0, pyramids = 0;
-    double total() const { return tets + triangles + hexes + pyramids; }
+    double tets = 0, triangles = 0, hexes = 0, pyramids = 0, quads = 0;
+    double total() const { return tets + triangles + hexes + pyramids + quads; }
 };
 
 // The lower bound for a solid of `volume` whose non-wall faces have `area`, at mesh size
@@ -58,11 +68,11 @@ struct ElementEstimate {
 ElementEstimate estimate_elements(double volume, double area, const std::vector<TubeExtent>& tubes, double size,
                                   double sweep_size, const ElementBudget& budget);
 
-// This machine's physical memory in bytes (0 when the system does not say).
-double physical_memory_bytes();
-
 // What the check compares the estimate with: budget.max_elements, or the memory's worth.
 double element_limit(const ElementBudget& budget);
+
+// The limit in words: "--max-elements 8e+03", or the memory and where its figure comes from.
+std::string element_limit_text(const ElementBudget& budget);
 
 // The refusal rule itself, so that `inspect`'s "refuses these sizes" is the check's answer.
 inline bool exceeds_limit(const ElementEstimate& e, double limit) { return e.total() > limit; }
@@ -70,13 +80,17 @@ inline bool exceeds_limit(const ElementEstimate& e, double limit) { return e.tot
 // What the user gave, for the message: where S and St came from and the model's extent.
 struct BudgetContext {
     std::string size_source;   // "user" or the default's formula (SizePlan::size_source)
-    std::string sweep_source;  // likewise for St
+    std::string sweep_source;  // likewise for St, with the rule that cut it when one did
     std::string extent;        // "4000 x 4000 x 4000 millimetre"
     int ring_nodes = 0;        // n around each tube when the user gave it (--circ), else 0
+    // The largest St the sizing rules accept (+inf: unbounded) and what bounds it.
+    double largest_sweep_size = INFINITY;
+    std::string largest_sweep_limit;
 };
 
 // The estimate, or tubemesh::Error when it exceeds element_limit(budget): the message gives
-// the bound, the limit and its source, and the smallest S (or the hint about St) that fits.
+// the bound, the limit and its source, and what would fit: the smallest S, the smallest St
+// the rules accept, or, when neither can, the --max-elements the run needs at least.
 ElementEstimate check_element_budget(double volume, double area, const std::vector<TubeExtent>& tubes, double size,
                           double sweep_size, const ElementBudget& budget, const BudgetContext& context);
 

@@ -1,6 +1,7 @@
 #include "geom/sizing/sizing.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -33,6 +34,9 @@ std::string fmt(double x) {
     s << x;
     return s.str();
 }
+
+// Walls that touch measure a few 1e-13 either side of zero: a message says 0.
+std::string distance_text(double d) { return fmt(std::max(0.0, d)); }
 
 void check_user_size(double value, const char* name) {
     if (value < 0 || !std::isfinite(value))
@@ -74,10 +78,10 @@ Extremes extremes(const std::vector<TubeInfo>& tubes) {
 void apply_rules(SizePlan& plan, const Clearances& c, const Extremes& e) {
     if (!plan.local_ring && plan.sweep_size > 1.4 * c.dcb)
         change(plan, "1: St > 1.4 Dcb", 1.4 * c.dcb,
-               tube_name(c.dcb_tube) + " is " + fmt(c.dcb) + " from face " + std::to_string(c.dcb_face));
+               tube_name(c.dcb_tube) + " is " + distance_text(c.dcb) + " from face " + std::to_string(c.dcb_face));
     if (!plan.local_ring && plan.sweep_size > 0.6 * c.dc)
         change(plan, "2: St > 0.6 Dc", 0.6 * c.dc,
-               tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + " are " + fmt(c.dc) + " apart");
+               tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + " are " + distance_text(c.dc) + " apart");
     if (plan.sweep_size > 0.8 * e.rc)
         change(plan, "3: St > 0.8 Rc", 0.8 * e.rc,
                "the centre line of " + tube_name(e.rc_tube) + " bends with radius " + fmt(e.rc));
@@ -88,12 +92,12 @@ void apply_guards(SizePlan& plan, const Clearances& c, const Extremes& e) {
     if (!plan.local_ring && reach >= c.dcb)
         change(plan, "guard: boundary", kGuardMargin * c.dcb / (1 + kPyramidRoom),
                "a ring of thickness St plus the 2.2 St its pyramids need reaches " + fmt(reach) + " from " +
-                   tube_name(c.dcb_tube) + ", but face " + std::to_string(c.dcb_face) + " is " + fmt(c.dcb) + " away");
+                   tube_name(c.dcb_tube) + ", but face " + std::to_string(c.dcb_face) + " is " + distance_text(c.dcb) + " away");
     const double gap = (2 + kPyramidRoom) * plan.sweep_size;
     if (!plan.local_ring && gap >= c.dc)
         change(plan, "guard: rings", kGuardMargin * c.dc / (2 + kPyramidRoom),
                "two rings of thickness St and the 2.2 St their pyramids need take " + fmt(gap) + " between " +
-                   tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + ", which are " + fmt(c.dc) + " apart");
+                   tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + ", which are " + distance_text(c.dc) + " apart");
     if (std::isfinite(e.rc)) {
         const double room = e.rc - e.r_max;
         if (room <= 0) {
@@ -107,7 +111,22 @@ void apply_guards(SizePlan& plan, const Clearances& c, const Extremes& e) {
     }
 }
 
+// What bounds St for a rule or guard, in the clearance's own words.
+std::string limit_reason(const std::string& rule, const Clearances& c, const Extremes& e) {
+    const std::string why = rule == "1: St > 1.4 Dcb" || rule == "guard: boundary"
+                                ? tube_name(c.dcb_tube) + " is " + distance_text(c.dcb) + " from face " + std::to_string(c.dcb_face)
+                            : rule == "2: St > 0.6 Dc" || rule == "guard: rings"
+                                ? tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + " are " + distance_text(c.dc) +
+                                      " apart"
+                                : "the centre line of " + tube_name(e.rc_tube) + " bends with radius " + fmt(e.rc);
+    return sizing_rule_name(rule) + ": " + why;
+}
+
 }  // namespace
+
+std::string sizing_rule_name(const std::string& rule) {
+    return !rule.empty() && std::isdigit(static_cast<unsigned char>(rule[0])) ? "rule " + rule : rule;
+}
 
 SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, const SizingOptions& options) {
     check_user_size(options.size, "the mesh size S");
@@ -147,6 +166,7 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
     plan.dc = kInf;
     plan.dcb = kInf;
     plan.rc = e.rc;
+    plan.largest_sweep_size = kInf;
     if (tubes.empty()) return plan;
 
     const Clearances c = measure_clearances(model, tubes);
@@ -159,6 +179,13 @@ SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, cons
     plan.local_ring = options.local_ring;
     apply_rules(plan, c, e);
     apply_guards(plan, c, e);
+    SizePlan widest;
+    widest.sweep_size = kInf;
+    widest.local_ring = plan.local_ring;
+    apply_rules(widest, c, e);
+    apply_guards(widest, c, e);
+    plan.largest_sweep_size = widest.sweep_size;
+    if (!widest.changes.empty()) plan.largest_sweep_limit = limit_reason(widest.changes.back().rule, c, e);
     if (options.size <= 0 && !plan.changes.empty()) {
         // The default S was max(diagonal / 25, 1.3 St): recompute it with the final St.
         const double diagonal = box_diagonal(model, tubes);

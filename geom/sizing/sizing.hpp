@@ -75,8 +75,15 @@ struct SizePlan {
     std::vector<SizeChange> changes;    // in the order they were made
     // The rings thin locally (SizingOptions::local_ring): discretize fills TubeData::room.
     bool local_ring = false;
+    // The largest St the rules and guards accept here (what they cut an unbounded St to) and
+    // the change that set it; +inf and empty without tubes or when nothing bounds St.
+    double largest_sweep_size = 0;
+    std::string largest_sweep_limit;
     std::vector<std::string> warnings;  // what no size can fix (a bend tighter than the tube)
 };
+
+// "rule 1: St > 1.4 Dcb", "guard: boundary": a SizeChange::rule as a sentence names it.
+std::string sizing_rule_name(const std::string& rule);
 
 // Throws tubemesh::Error for a non-positive or non-finite size given by the user.
 SizePlan plan_sizes(const Model& model, const std::vector<TubeInfo>& tubes, const SizingOptions& options = {});

@@ -17,6 +17,10 @@ std::string face_list(const std::vector<int>& faces) {
     return s;
 }
 
+// A distance as a message gives it: walls that touch measure a few 1e-13 either side of zero,
+// and within 1e-6 of the radius the message says they touch, at 0.
+double shown(double distance, double radius) { return distance <= 1e-6 * radius ? 0.0 : distance; }
+
 std::string pipe(const TubeSearch& tubes, int t) {
     return fmt::format("pipe {} (wall face {})", t + 1, face_list(tubes.tubes[static_cast<std::size_t>(t)].faces));
 }
@@ -53,33 +57,36 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
     const double by_face = plan.dcb / 3.2, by_pipes = plan.dc / 4.2;
     if (by_face <= by_pipes && plan.dcb_tube >= 0 && by_face < kThinnestRing * radius(plan.dcb_tube)) {
         const double r = radius(plan.dcb_tube);
+        const double dcb = shown(plan.dcb, r);
         throw Error(fmt::format(
             "{} passes {:.3g} from face {} ({:.2g} of its radius {:.3g}){}: a hex ring that fits there would be "
             "under {:.3g} thick, less than {} of the radius, and take millions of elements; move the pipe at least "
             "{:.3g} away from face {}",
-            pipe(tubes, plan.dcb_tube), plan.dcb, plan.dcb_face, plan.dcb / r, r,
-            plan.dcb <= 1e-6 * r ? " - it touches the face" : "", by_face, kThinnestRing, 0.2 * r, plan.dcb_face));
+            pipe(tubes, plan.dcb_tube), dcb, plan.dcb_face, dcb / r, r, dcb == 0 ? " - it touches the face" : "",
+            dcb / 3.2, kThinnestRing, 0.2 * r, plan.dcb_face));
     }
     if (by_pipes < by_face && plan.dc_tube_a >= 0) {
         const double r = std::min(radius(plan.dc_tube_a), radius(plan.dc_tube_b));
+        const double dc = shown(plan.dc, r);
         if (by_pipes < kThinnestRing * r)
             throw Error(fmt::format(
                 "{} and {} come within {:.3g} of each other ({:.2g} of the radius {:.3g}){}: hex rings that fit "
                 "between them would be under {:.3g} thick, less than {} of the radius, and take millions of "
                 "elements; keep the walls at least {:.3g} apart",
-                pipe(tubes, plan.dc_tube_a), pipe(tubes, plan.dc_tube_b), plan.dc, plan.dc / r, r,
-                plan.dc <= 1e-6 * r ? " - they touch" : "", by_pipes, kThinnestRing, 0.25 * r));
+                pipe(tubes, plan.dc_tube_a), pipe(tubes, plan.dc_tube_b), dc, dc / r, r,
+                dc == 0 ? " - they touch" : "", dc / 4.2, kThinnestRing, 0.25 * r));
     }
 }
 
 void diagnose_hole_clearances(const std::vector<HoleClearance>& holes) {
     for (const HoleClearance& h : holes) {
         if (h.distance >= kThinnestRing * h.radius) continue;
+        const double distance = shown(h.distance, h.radius);
         throw Error(fmt::format(
             "the hole of faces {} (not a tube: meshed with tetrahedra) passes {:.3g} from face {} ({:.2g} of its radius "
             "{:.3g}){}: the tetrahedra in that gap would be slivers; move the hole at least {:.3g} away from face {}",
-            face_list(h.hole_faces), h.distance, h.face, h.distance / h.radius, h.radius,
-            h.distance <= 1e-6 * h.radius ? " - it touches the face" : "", 0.2 * h.radius, h.face));
+            face_list(h.hole_faces), distance, h.face, distance / h.radius, h.radius,
+            distance == 0 ? " - it touches the face" : "", 0.2 * h.radius, h.face));
     }
 }
 

@@ -113,12 +113,14 @@ TEST_F(CliGeomPaperEx1, InspectShowsTheElementBoundMeshChecks) {
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
     const nlohmann::json b = nlohmann::json::parse(r.out).at("elements_at_least");
     const double parts = b.at("tets").get<double>() + b.at("triangles").get<double>() +
-                         b.at("hexes").get<double>() + b.at("pyramids").get<double>();
+                         b.at("hexes").get<double>() + b.at("pyramids").get<double>() + b.at("quads").get<double>();
     EXPECT_NEAR(b.at("total").get<double>(), parts, 1e-9 * parts) << b.dump();
     EXPECT_GT(b.at("hexes").get<double>(), 0) << b.dump();
     EXPECT_GT(b.at("tets").get<double>(), 0) << b.dump();
     EXPECT_GT(b.at("limit").get<double>(), b.at("total").get<double>()) << b.dump();
     EXPECT_FALSE(b.at("refused").get<bool>()) << b.dump();
+    EXPECT_NE(b.at("limit_source").get<std::string>().find("GiB this process may use"), std::string::npos)
+        << b.dump();
 
     // S = 0.002 in a 15 x 25 x 4 block: ~1e12 tets. inspect still exits 0 and says so.
     const ProcessResult tiny = tubemesh_cmd("inspect --size 0.002 " + q(step()));
@@ -131,6 +133,26 @@ TEST_F(CliGeomPaperEx1, InspectShowsTheElementBoundMeshChecks) {
     const ProcessResult mesh = tubemesh_cmd("mesh --quiet --size 0.002 " + q(step()) + " -o " + q(out / "x.msh"));
     EXPECT_EQ(mesh.exit_code, 2) << mesh.out << mesh.err;
     EXPECT_FALSE(fs::exists(out / "x.msh"));
+}
+
+// Under `ulimit -v` (here 2 GiB, less than any machine this runs on) inspect shows the limit
+// that binds, the one `tubemesh mesh` then checks, not the machine's memory.
+TEST_F(CliGeomPaperEx1, InspectShowsTheProcessMemoryLimit) {
+    ASSERT_EQ(made_->exit_code, 0) << made_->err;
+    const double limit = 2.0 * 1024 * 1024 * 1024;
+    const ProcessResult r =
+        run_command("prlimit --as=" + std::to_string(static_cast<long long>(limit)) + " " + cli() + " inspect --json " +
+                    q(step()));
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const nlohmann::json b = nlohmann::json::parse(r.out).at("elements_at_least");
+    EXPECT_DOUBLE_EQ(b.at("limit").get<double>(), limit / 150) << b.dump();
+    EXPECT_NE(b.at("limit_source").get<std::string>().find("2 GiB this process may use (address-space limit (ulimit -v)"),
+              std::string::npos)
+        << b.dump();
+    const ProcessResult text = run_command("prlimit --as=" + std::to_string(static_cast<long long>(limit)) + " " +
+                                           cli() + " inspect " + q(step()));
+    EXPECT_NE(text.out.find("limit: about 1.43e+07 elements in the 2 GiB this process may use"), std::string::npos)
+        << text.out;
 }
 
 // ---- make-block errors: one line on stderr, exit 2, nothing written ----

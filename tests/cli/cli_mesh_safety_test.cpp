@@ -245,6 +245,19 @@ TEST_F(CliMeshSafety, AVtmFolderHoldsOnlyThisRunsParts) {
     EXPECT_FALSE(fs::exists(out / "x" / "boundary_pipe_2.vtu"));
 }
 
+// --max-elements caps what is written: the crankshaft at --size 25 passes the estimate for
+// 8000 elements (6.5e3) and would make about 1.6e4; the run stops at a stage's end with the
+// counts so far, exit 2, and no file.
+TEST_F(CliMeshSafety, MaxElementsCapsTheRealCounts) {
+    const fs::path in = tubemesh::testing::built_preset(dir.path(), "paper-ex3");
+    const auto r = run_command(cli() + " mesh " + q(in) + " --size 25 --max-elements 8000 --quiet -o " +
+                               q(dir / "out.msh"));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("stage the mesh has "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("more than --max-elements 8e+03"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.msh"));
+}
+
 TEST_F(CliMeshSafety, SigtermWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGTERM); }
 TEST_F(CliMeshSafety, SigintWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGINT); }
 TEST_F(CliMeshSafety, SighupWhileWritingLeavesNothing) { interrupt_while_writing(dir.path(), SIGHUP); }

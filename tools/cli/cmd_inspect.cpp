@@ -91,13 +91,15 @@ nlohmann::json plan_json(const geom::SizePlan& p) {
 struct Bound {
     geom::ElementEstimate estimate;
     double limit = 0;
+    std::string limit_text;  // where the limit comes from: the memory this process may use
     bool refused() const { return geom::exceeds_limit(estimate, limit); }
 };
 
 nlohmann::json bound_json(const Bound& b) {
     return {{"tets", b.estimate.tets},         {"triangles", b.estimate.triangles},
             {"hexes", b.estimate.hexes},       {"pyramids", b.estimate.pyramids},
-            {"total", b.estimate.total()},     {"limit", b.limit},
+            {"quads", b.estimate.quads},       {"total", b.estimate.total()},
+            {"limit", number(b.limit)},        {"limit_source", b.limit_text},
             {"refused", b.refused()}};
 }
 
@@ -183,9 +185,9 @@ void print_text(const geom::Model& model, const std::vector<int>& loops_per_face
 
     const geom::ElementEstimate& e = bound.estimate;
     fmt::print("\nelements at these sizes: at least {:.3g} (tets {:.3g}, surface triangles {:.3g}, hexes {:.3g}, "
-               "pyramids {:.3g}); limit {:.3g}{}\n",
-               e.total(), e.tets, e.triangles, e.hexes, e.pyramids, bound.limit,
-               bound.refused() ? ": `tubemesh mesh` refuses these sizes" : "");
+               "pyramids {:.3g}, ring quads {:.3g})\nlimit: {}{}\n",
+               e.total(), e.tets, e.triangles, e.hexes, e.pyramids, e.quads, bound.limit_text,
+               bound.refused() ? "; `tubemesh mesh` refuses these sizes" : "");
 }
 
 }  // namespace
@@ -218,7 +220,7 @@ Command add_inspect_command(CLI::App& app) {
                 // The same bound and limit `tubemesh mesh` checks (default options).
                 const geom::PrepareOptions prepare;
                 const Bound bound{geom::estimate_run_elements(model, found, plan, prepare),
-                                  geom::element_limit(prepare.budget)};
+                                  geom::element_limit(prepare.budget), geom::element_limit_text(prepare.budget)};
                 // Every figure shown in the file's unit (the model is at working scale).
                 const geom::TubeSearch found_shown = geom::at_source_scale(found, k);
                 const geom::SizePlan plan_shown = geom::at_source_scale(plan, k);

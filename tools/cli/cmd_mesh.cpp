@@ -23,7 +23,7 @@
 #include "engine/io/mesh_io.hpp"
 #include "geom/assembly/mesh_assembly.hpp"
 #include "geom/sizing/discretize_edges.hpp"
-#include "geom/sizing/element_budget.hpp"
+#include "engine/core/usable_memory.hpp"
 #include "geom/mesh_file.hpp"
 #include "tools/cli/commands.hpp"
 #include "tools/cli/memory_limit.hpp"
@@ -198,8 +198,10 @@ Command add_mesh_command(CLI::App& app) {
         "edges, curved faces, rings and pyramids stay, the shape and the surface groups do not change)");
     args->max_elements_option =
         cmd->add_option("--max-elements", args->max_elements,
-                        "Refuse, before meshing, sizes that give more elements than this (a lower bound from the "
-                        "volume, area, S, St and tube lengths; default: what this machine's memory holds)")
+                        "Refuse sizes that give more elements (cells and boundary faces) than this: before meshing on "
+                        "a lower bound from the volume, area, S, St and tube lengths, then after each stage on the "
+                        "real counts so far; no mesh over it is written (default: what the memory this process may "
+                        "use holds, physical, ulimit -v or cgroup limit, checked on the lower bound only)")
             ->check(positive_number());
     cmd->add_option("--report", args->report, "Also write the report as JSON to this file");
     cmd->add_option("--html", args->html,
@@ -243,14 +245,18 @@ Command add_mesh_command(CLI::App& app) {
         const WriteOptions write =
             run::write_options(args->msh_ascii, args->inp_family, args->inp_pyramid, run::Naming::Flags);
         ProgressLine progress(ProgressLine::mode_for(args->quiet));
-        const MeshOptions options = mesh_options(*args, progress);
+        MeshOptions options = mesh_options(*args, progress);
         auto say = [&](const std::string& s) {
             if (!args->quiet) fmt::print("{}\n", s);
         };
 
-        // 90 % of the physical memory, or a lower limit already set (ulimit -v): the element
-        // budget refuses most runs that would not fit; this stops the rest with a message.
-        const double memory_limit = limit_memory(0.9 * geom::physical_memory_bytes());
+        // 90 % of the physical memory (or the cgroup's limit), or a lower limit already set
+        // (ulimit -v): the element budget refuses most runs that would not fit; this stops the
+        // rest with a message. The budget reads the memory before this process lowers its own.
+        const UsableMemory usable = usable_memory();
+        const double cgroup = cgroup_memory_limit_bytes();
+        const double memory_limit = limit_memory(0.9 * (cgroup > 0 ? cgroup : physical_memory_bytes()));
+        options.memory = usable;
         geom::MeshRun meshed;
         std::optional<geom::AssemblyRun> assembly;
         try {

@@ -28,7 +28,7 @@ struct MeshSettings {
     int tet_relax = default_mesh_options().tets.relaxation.iterations;
     bool move_apexes = default_mesh_options().tets.move_apexes;
     bool slide_surface = default_mesh_options().tets.slide_surface;
-    std::optional<double> max_elements;     // automatic: what this machine's memory holds
+    std::optional<double> max_elements;     // automatic: what the memory this process may use holds
     std::optional<int> solid;               // which solid of the file, 1-based; automatic: the only one
     Stage until = kLastStage;
     double sweep_share = 0;                 // > 0: automatic St = this share of S (apply_economy)

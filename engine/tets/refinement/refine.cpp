@@ -74,6 +74,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                     ++added;
                 }
             if (added == 0) break;
+            if (options.round_done) options.round_done(tri.live_tets());
         }
         stats.size_tests = memo.tests;
         stats.proposals_reused = proposals.reused_total.load();

@@ -5,6 +5,7 @@
 // or the front, and tets still too big for h) proposes points (interior_points.hpp), the ones
 // far enough from existing points and from each other are inserted, until no tet is too big or
 // a round adds nothing.
+#include <functional>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct RefineOptions {
     index_t min_points_per_part = 256;
     // Upper bound on rounds (each adds a layer of points); 200.
     unsigned max_rounds = 200;
+    // Called after each round with the tets in the mesh, which only grow from round to round; it
+    // may throw to stop the refinement (the pipeline's element cap). May be empty.
+    std::function<void(index_t tets)> round_done;
 };
 
 struct RefineStats {

@@ -80,8 +80,11 @@ DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tub
     out.size = plan.size;
     out.sweep_size = plan.sweep_size;
     std::set<int> tube_edges;
-    for (const TubeInfo& info : tubes) {
-        out.tubes.push_back(discretize_tube(index, info, plan.sweep_size, options.ring_nodes));
+    for (std::size_t i = 0; i < tubes.size(); ++i) {
+        const TubeInfo& info = tubes[i];
+        const bool own = i < options.tube_sweep_size.size() && options.tube_sweep_size[i] > 0;
+        out.tubes.push_back(
+            discretize_tube(index, info, own ? options.tube_sweep_size[i] : plan.sweep_size, options.ring_nodes));
         for (int f : info.faces)
             for (const FaceWire& w : index.face_wires[f])
                 for (const LoopEdge& e : w.edges) tube_edges.insert(e.edge);

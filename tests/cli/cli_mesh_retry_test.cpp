@@ -32,13 +32,11 @@ void expect_contains(const std::string& text, const std::string& what) {
 }
 
 // Meshes `step` with `options`, expects success with `warning` on stderr, and checks the file.
-void expect_meshed(const TempDir& dir, const fs::path& step, const std::string& options, const std::string& warning,
-                   const fs::path& out) {
+void expect_meshed(const fs::path& step, const std::string& options, const std::string& warning, const fs::path& out) {
     const auto r = run_command(cli() + " mesh " + q(step) + " -o " + q(out) + " " + options);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     expect_contains(r.err, warning);
     EXPECT_EQ(run_command(cli() + " check " + q(out)).exit_code, 0);
-    (void)dir;
 }
 
 void expect_refused(const fs::path& step, const std::string& options, const std::string& message,
@@ -56,7 +54,7 @@ void expect_refused(const fs::path& step, const std::string& options, const std:
 TEST(CliMeshRetry, PyramidsWithoutRoomAreMeshedWithAThinnerRingThere) {
     TempDir dir;
     const fs::path step = make_block(dir, "--seed 498");
-    expect_meshed(dir, step, "",
+    expect_meshed(step, "",
                   "the pyramids found no room in front of the ring of tube 4 at St = 0.0459996: meshed with "
                   "St = 0.0321997 for tube 4",
                   dir / "out.msh");
@@ -75,7 +73,7 @@ TEST(CliMeshRetry, PyramidsWithoutRoomAtAGivenSweepSizeNameOneToTry) {
 TEST(CliMeshRetry, RecoveryGivingUpIsMeshedWithCoarserEdges) {
     TempDir dir;
     const fs::path step = make_block(dir, "--seed 88 --close");
-    expect_meshed(dir, step, "",
+    expect_meshed(step, "",
                   "boundary recovery gave up at chordal tolerance 0.008125 on a valid front: meshed with --chordal "
                   "0.01625",
                   dir / "out.msh");
@@ -96,7 +94,7 @@ TEST(CliMeshRetry, RecoveryGivingUpAtAGivenChordalNamesOneThatWorks) {
 TEST(CliMeshRetryHeavy, CloseSeed163IsMeshedWithAThinnerRing) {
     TempDir dir;
     const fs::path step = make_block(dir, "--seed 163 --close");
-    expect_meshed(dir, step, "--threads 2",
+    expect_meshed(step, "--threads 2",
                   "the pyramids found no room in front of the ring of tube 1 at St = 0.0073318: meshed with "
                   "St = 0.00513226 for tube 1",
                   dir / "out.msh");
@@ -108,7 +106,7 @@ TEST(CliMeshRetryHeavy, RetriedRunsAreTheSameForOneAndTwoThreads) {
         TempDir dir;
         const fs::path step = make_block(dir, how);
         for (const char* threads : {"1", "2"})
-            expect_meshed(dir, step, std::string("--threads ") + threads, "meshed with",
+            expect_meshed(step, std::string("--threads ") + threads, "meshed with",
                           dir / (std::string("t") + threads + ".msh"));
         EXPECT_EQ(tubemesh::io::read_file_bytes(dir / "t1.msh"), tubemesh::io::read_file_bytes(dir / "t2.msh")) << how;
     }

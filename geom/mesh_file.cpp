@@ -10,6 +10,7 @@
 #include "geom/describe_groups.hpp"
 #include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
+#include "geom/run_retry.hpp"
 #include "geom/working_scale.hpp"
 
 namespace tubemesh::geom {
@@ -38,26 +39,19 @@ void add_quality_warnings(PipelineResult& r, const SizePlan& plan, const MeshOpt
             options.sweep.grading));
 }
 
-PhaseReport model_phase(const char* name, double seconds, const Model& model) {
-    return {name, seconds, {{"faces", double(model.face_count())}, {"edges", double(model.edge_count())}}, {}};
-}
-
-// The run on a model at working scale (working_scale.hpp); `options` are the user's.
-MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage until,
-                     std::optional<PhaseReport> first) {
-    const int k = model.scale_exponent();
-    const MeshOptions options = working_options(user_options, k);
-    const PreparedModel prepared = prepare_model(model, prepare_options(options));
-    MeshRun run;
-    run.result = run_pipeline(prepared.pipeline_input(), options, until);
+// The report around a meshed attempt: geom's phases first, warnings, groups, sizes; at working
+// scale k (the caller scales the run back).
+void finish_run(MeshRun& run, const Model& model, const PreparedModel& prepared, const MeshOptions& options,
+                std::optional<PhaseReport> first, const RunRetry& retry, int k) {
     PipelineResult& r = run.result;
-
     std::vector<PhaseReport> phases;
     if (first) phases.push_back(std::move(*first));
     phases.insert(phases.end(), prepared.phases.begin(), prepared.phases.end());
     for (const PhaseReport& p : phases) r.seconds += p.seconds;
     r.phases.insert(r.phases.begin(), phases.begin(), phases.end());
-    r.warnings.insert(r.warnings.begin(), prepared.warnings.begin(), prepared.warnings.end());
+    std::vector<std::string> warnings = prepared.warnings;
+    for (const std::string& w : retry.warnings()) warnings.push_back(w);
+    r.warnings.insert(r.warnings.begin(), warnings.begin(), warnings.end());
 
     add_quality_warnings(r, prepared.plan, options);
     describe_groups(model, prepared.tubes, r.mesh, r.description);
@@ -66,11 +60,37 @@ MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage 
     run.format = model.report().format;
     run.name = model.report().name;
     run.model_lines = prepared.report_lines(k);
+    for (const std::string& line : retry.report_lines()) run.model_lines.push_back(line);
     run.size = prepared.geometry.size;
     run.sweep_size = prepared.geometry.sweep_size;
     run.tubes = prepared.geometry.tubes.size();
-    scale_back(run, k);
-    return run;
+}
+
+PhaseReport model_phase(const char* name, double seconds, const Model& model) {
+    return {name, seconds, {{"faces", double(model.face_count())}, {"edges", double(model.edge_count())}}, {}};
+}
+
+// The run on a model at working scale (working_scale.hpp); `user_options` are the user's. A
+// retryable failure is run again with what the user did not give (run_retry.hpp).
+MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage until,
+                     std::optional<PhaseReport> first) {
+    const int k = model.scale_exponent();
+    const MeshOptions options = working_options(user_options, k);
+    RunRetry retry(options);
+    for (;;) {
+        const PreparedModel prepared = prepare_model(model, retry.prepare_options());
+        MeshRun run;
+        try {
+            run.result = run_pipeline(prepared.pipeline_input(), retry.mesh_options(), until);
+        } catch (const RetryableFailure& failure) {
+            retry.after(failure, prepared.plan, prepared.geometry.tubes.size());
+            continue;
+        }
+        retry.accept();
+        finish_run(run, model, prepared, options, std::move(first), retry, k);
+        scale_back(run, k);
+        return run;
+    }
 }
 
 // The run after the model exists; `first` is the import or build phase, if any. A model not

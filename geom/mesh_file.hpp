@@ -14,9 +14,15 @@
 // check when options.check (engine/pipeline/stage_check.hpp). options.threads limits oneTBB for
 // the whole call, import and check included. No OpenCASCADE header here.
 //
+// A phase that fails where other sizes may succeed (pyramids without room in front of a ring,
+// boundary recovery giving up on a valid front) is run again with what the user did not give:
+// thinner rings for those tubes, a coarser chordal tolerance (run_retry.hpp); the result's
+// warnings and model_lines say what changed. A run that succeeds the first time is never changed.
+//
 // Throws tubemesh::Error, one line a user can act on, for a missing or unreadable file, a file
 // with no solid or several solids and no `solid` chosen, invalid or contradictory sizes, a
-// phase that fails, or a mesh that fails the check.
+// phase that fails (and, where a retry was possible, failed again or needs a setting the user
+// gave changed: the message names it and a value to try), or a mesh that fails the check.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -51,6 +51,7 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
     if (layers) s.layers = *layers;
     if (axial_aspect) s.axial_aspect = *axial_aspect;
     if (chordal) s.chordal = *chordal;
+    s.chordal_given = chordal.has_value();
     if (economy) run::apply_economy(s, {layers.has_value(), axial_aspect.has_value(), chordal.has_value()});
     s.pyramid_height = pyramid_height;
     s.gradation = gradation;

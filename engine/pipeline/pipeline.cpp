@@ -196,6 +196,20 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
     out.phases.push_back(std::move(r));
 }
 
+// The tubes whose rings hold these outer quads (ascending fronts in, ascending tubes out).
+std::vector<index_t> tubes_of_fronts(const SweepResult& sweep, const std::vector<index_t>& fronts) {
+    std::vector<index_t> tubes;
+    for (const TubeRing& ring : sweep.rings) {
+        const index_t first = ring.first_lateral_quad;
+        const index_t end = first + (ring.stations - 1) * ring.circumferential;
+        const auto at = std::lower_bound(fronts.begin(), fronts.end(), first);
+        if (at != fronts.end() && *at < end) tubes.push_back(ring.tube);
+    }
+    std::sort(tubes.begin(), tubes.end());
+    tubes.erase(std::unique(tubes.begin(), tubes.end()), tubes.end());
+    return tubes;
+}
+
 void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
     HybridMesh& mesh = out.mesh;
@@ -211,7 +225,11 @@ void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineRe
     in.sweep_size = opt.sweep.sweep_size > 0 ? opt.sweep.sweep_size : input.geometry.sweep_size;
     PyramidResult p;
     if (!out.sweep.outer_quads.empty()) {
-        p = build_pyramids(mesh, in, opt.pyramids);
+        try {
+            p = build_pyramids(mesh, in, opt.pyramids);
+        } catch (const PyramidRoomError& e) {
+            throw RetryableFailure(e.what(), RetryableFailure::Cause::PyramidRoom, tubes_of_fronts(out.sweep, e.fronts));
+        }
     }
     // The tet region's boundary: free pyramid triangles, then the uncovered surface triangles.
     out.tet_front = p.free_triangles;
@@ -246,7 +264,11 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism
     // The refinement is where a run's memory grows most: the cap is checked after each round.
     if (std::isfinite(in.cap.limit))
         to.refine.round_done = [&](index_t tets) { check_refining_tets(out.mesh, double(tets), in.cap); };
-    out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), par, to);
+    try {
+        out.tet_stats = tets::build_tets(out.mesh, out.tet_front, out.mesh.region_id("tets"), par, to);
+    } catch (const tets::RecoveryGaveUp& e) {
+        throw RetryableFailure(e.what(), RetryableFailure::Cause::Recovery);
+    }
     const tets::TetStepStats& s = out.tet_stats;
     PhaseReport r{"tets", seconds_since(t0), {}};
     // Recovered: front edges / triangles the Delaunay tets of the front's points lacked, all

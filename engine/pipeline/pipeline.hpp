@@ -99,6 +99,10 @@ struct MeshOptions {
     // How far a curved B-rep edge's chords may stray from it, as a fraction of each chord's
     // length (geom/sizing/discretize_edges.hpp). kDefaultChordal: segments turn by 0.065 rad.
     double chordal = kDefaultChordal;
+    // Whether the user gave `chordal` (a front end sets it): a run whose tet step fails is then
+    // not retried with a coarser tolerance but refused, naming one that works
+    // (geom/mesh_file.hpp). false (default): the tolerance is the run's to change.
+    bool chordal_given = false;
 
     // Hex ring options (engine/sweep/sweep.hpp documents each default: L = 2 layers graded
     // 1.5, axial aspect 1.5, condition cap 3.0). sweep.sweep_size = 0 (the default) takes
@@ -207,9 +211,24 @@ struct PipelineResult {
     PyramidStats pyramid_stats;
 };
 
+// A phase that failed on a well-formed input where other sizes may succeed: the pyramids found
+// no room in front of some rings, or boundary recovery gave up on a front that passed its checks.
+// geom/mesh_file.hpp retries such runs with what the user did not give.
+class RetryableFailure : public Error {
+public:
+    enum class Cause { PyramidRoom, Recovery };
+    RetryableFailure(const std::string& message, Cause cause, std::vector<index_t> tubes = {})
+        : Error(message), cause(cause), tubes(std::move(tubes)) {}
+    Cause cause;
+    // PyramidRoom: the tubes (indices into DiscreteGeometry::tubes, ascending) whose rings hold the
+    // fronts that found no pyramid. Empty for Recovery.
+    std::vector<index_t> tubes;
+};
+
 // Runs the phases up to and including `until`, summarises the quality, then checks the mesh
 // (options.check; a "check" phase last). Throws tubemesh::Error from the first phase that
-// fails (its message names the tube or face) or when the mesh fails the check.
+// fails (its message names the tube or face; RetryableFailure where other sizes may succeed) or
+// when the mesh fails the check.
 // Reports progress per phase through options.progress: sweep counts tubes, surface faces,
 // pyramids front quads (start and end of each phase: the modules run as one call each).
 PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& options = {},

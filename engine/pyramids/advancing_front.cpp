@@ -130,13 +130,16 @@ void AdvancingFront::fail(const std::vector<index_t>& still, int round) const {
     // and the first quad alone would point at one end of it.
     Box extent = Box::of(f.centroid);
     for (index_t i : still) extent.add(world_.fronts[i].centroid);
-    throw Error("pyramids: " + std::to_string(still.size()) + " front quad(s) found no valid pyramid after " +
+    std::vector<index_t> fronts = still;
+    std::sort(fronts.begin(), fronts.end());
+    throw PyramidRoomError("pyramids: " + std::to_string(still.size()) + " front quad(s) found no valid pyramid after " +
                 std::to_string(round) + " drawback round(s), their centres between " + where(extent.lo) + " and " +
                 where(extent.hi) + "; the first is quad " + std::to_string(first) + " near " + where(f.centroid) +
                 " with edge length " + std::to_string(f.h) + ", whose last try node was refused as " +
                 verdict_name(choice_[first].refusal) +
                 ". A ring there is too close to another ring or to a face for its quad size (the criteria need "
-                "about 1.2 edge lengths of room in front of a quad): " + advice() + " or move the pipe");
+                "about 1.2 edge lengths of room in front of a quad): " + advice() + " or move the pipe",
+                std::move(fronts));
 }
 
 void AdvancingFront::note_batch(index_t size) {

@@ -32,6 +32,8 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -177,11 +179,20 @@ struct PyramidResult {
     PyramidStats stats;
 };
 
+// What build_pyramids throws when well-formed fronts find no valid pyramid: the fronts, so that
+// a caller can tell which rings lack room (the pipeline retries them thinner).
+class PyramidRoomError : public Error {
+public:
+    PyramidRoomError(const std::string& message, std::vector<index_t> fronts)
+        : Error(message), fronts(std::move(fronts)) {}
+    std::vector<index_t> fronts;  // front quad indices, ascending
+};
+
 // Puts one pyramid on every front quad: appends the apexes to mesh's points and the
 // pyramids (region in.region) to its pyramid cells. Parallel with oneTBB; the appended data
 // is identical for every thread count. Throws tubemesh::Error, leaving the mesh unchanged,
-// when the input is malformed or some front finds no valid pyramid after
-// opt.max_drawback_rounds drawbacks.
+// when the input is malformed, and PyramidRoomError when some front finds no valid pyramid
+// after opt.max_drawback_rounds drawbacks.
 PyramidResult build_pyramids(HybridMesh& mesh, const PyramidInput& in, const PyramidOptions& opt = {});
 
 }  // namespace tubemesh

@@ -83,9 +83,12 @@ DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tub
     std::set<int> tube_edges;
     const std::vector<RingRoom> rooms =
         plan.local_ring ? ring_rooms(model, tubes, plan.sweep_size) : std::vector<RingRoom>(tubes.size());
-    for (const TubeInfo& info : tubes) {
-        out.tubes.push_back(discretize_tube(index, info, plan.sweep_size, options.ring_nodes));
-        out.tubes.back().room = rooms[out.tubes.size() - 1];
+    for (std::size_t i = 0; i < tubes.size(); ++i) {
+        const TubeInfo& info = tubes[i];
+        const bool own = i < options.tube_sweep_size.size() && options.tube_sweep_size[i] > 0;
+        out.tubes.push_back(
+            discretize_tube(index, info, own ? options.tube_sweep_size[i] : plan.sweep_size, options.ring_nodes));
+        out.tubes.back().room = rooms[i];
         for (int f : info.faces)
             for (const FaceWire& w : index.face_wires[f])
                 for (const LoopEdge& e : w.edges) tube_edges.insert(e.edge);

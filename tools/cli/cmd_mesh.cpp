@@ -107,6 +107,7 @@ MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
     take_if_given(s.threads, a.threads_option, a.threads);
     take_if_given(s.max_elements, a.max_elements_option, a.max_elements);
     take_if_given(s.solid, a.solid_option, a.solid);
+    s.chordal_given = a.chordal_option->count() > 0;
     if (a.economy)
         run::apply_economy(s, {.layers = a.layers_option->count() > 0,
                                .axial_aspect = a.axial_option->count() > 0,

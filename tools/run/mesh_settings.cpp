@@ -59,6 +59,7 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     o.local_ring = s.local_ring;
     o.circumferential = s.circumferential.value_or(0);
     o.chordal = s.chordal;
+    o.chordal_given = s.chordal_given;
     o.sweep.radial_layers = s.layers;
     o.sweep.axial_aspect = s.axial_aspect;
     o.pyramids.height_factor = s.pyramid_height;

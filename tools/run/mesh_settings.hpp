@@ -19,6 +19,7 @@ struct MeshSettings {
     std::optional<double> sweep_size;       // St; automatic: smallest tube diameter, cut by the rules
     std::optional<int> circumferential;     // n; automatic: multiple of 4 nearest 2 pi (r + St/2) / St, >= 8
     double chordal = default_mesh_options().chordal;
+    bool chordal_given = false;             // the user gave chordal: a failed run is not retried coarser
     int layers = default_mesh_options().sweep.radial_layers;
     double axial_aspect = default_mesh_options().sweep.axial_aspect;
     double pyramid_height = default_mesh_options().pyramids.height_factor;

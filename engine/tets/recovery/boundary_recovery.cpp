@@ -111,10 +111,10 @@ public:
                                 std::to_string(q) + " crosses " + name(g));
             if (flip_once(g)) continue;
             if (++steiner > opt_.max_steiner_per_element || !insert_steiner(g))
-                throw Error("boundary recovery failed: " + name(g) +
-                            " could not be recovered by flips and Steiner points (is the front self-intersecting?)");
+                throw RecoveryGaveUp("boundary recovery failed: " + name(g) +
+                            " could not be recovered by flips and Steiner points");
         }
-        throw Error("boundary recovery failed: " + name(g) + " still missing after " +
+        throw RecoveryGaveUp("boundary recovery failed: " + name(g) + " still missing after " +
                     std::to_string(opt_.max_steps_per_element) + " steps");
     }
 

@@ -64,11 +64,19 @@ struct RecoveryStats {
     double seconds_total = 0;
 };
 
+// What recover_boundary throws when flips and Steiner points give up on a missing front element
+// (the front passed its checks): other sizes of the front may recover, so the pipeline says so.
+class RecoveryGaveUp : public Error {
+public:
+    using Error::Error;
+};
+
 // xyz: 3 coordinates per point; front: 3 point ids per triangle, normal out of the region.
 // Points no front triangle names stay in the domain's xyz (ids are kept) but in no tet.
 // Throws tubemesh::Error for an open, non-manifold or inconsistently oriented front, for points
 // with equal coordinates, for a self-intersecting front (front elements crossing, a front
-// point on a front edge or triangle), for a front oriented inwards, and when recovery fails.
+// point on a front edge or triangle), for a front oriented inwards, and RecoveryGaveUp when
+// recovery fails.
 // The Delaunay kernel runs with par.parts parts (the result depends on the input and that count
 // only); it and recovery's parallel loops (front checks, which front elements are present, the
 // tets beside the front) run in the caller's oneTBB arena; the flips and Steiner points are serial.

@@ -59,9 +59,10 @@ double axial_step(double radius, const std::vector<double>& offsets, int n, doub
     const double outer_side = 2 * (radius + offsets.back()) * std::sin(std::numbers::pi / n);
     const double wanted = axial_aspect * outer_side;
     if (!(max_condition > 0)) return wanted;
+    const double shortest = std::min(wanted, kMinAxialAspect * outer_side);
     double step = wanted;
-    while (step > 0.25 * wanted && straight_ring_condition(radius, offsets, n, step) > max_condition) step *= 0.95;
-    return std::max(step, 0.25 * wanted);
+    while (step > shortest && straight_ring_condition(radius, offsets, n, step) > max_condition) step *= 0.95;
+    return std::max(step, shortest);
 }
 
 }  // namespace sweep

@@ -11,7 +11,10 @@ std::vector<double> radial_offsets(double sweep_size, int layers, double grading
 
 // Centre-line distance between stations: `axial_aspect` times the side of the outer polygon,
 // 2 (r + St) sin(π/n), shortened while the ring's hexes on a straight pipe of radius r have a
-// condition number above `max_condition` (<= 0: never), by 5% steps to at most a quarter.
+// condition number above `max_condition` (<= 0: never), by 5% steps, but not below
+// kMinAxialAspect sides (nor below the wanted step): a long wanted step is cut until the
+// hexes meet the cap, and many thin layers or many nodes around, which no step brings under
+// the cap, keep outer quads the pyramids can stand on.
 double axial_step(double radius, const std::vector<double>& offsets, int n, double axial_aspect,
                   double max_condition);
 

@@ -56,5 +56,21 @@ TEST(SweepDimensions, AxialStepFollowsTheAspectUnlessTheConditionCaps) {
     EXPECT_NEAR(sweep::axial_step(r, o7, n, 1.5, 0), 1.5 * side7, 1e-12);  // cap off
 }
 
+// Where no step meets the cap (many thin layers) the step stays at kMinAxialAspect outer
+// sides, where the pyramids have room; a long wanted step is cut until the cap holds,
+// however long.
+TEST(SweepDimensions, AxialStepStaysWherePyramidsFit) {
+    const double r = 1.0;
+    const int n = 8;
+    const double side = 2 * 3.0 * std::sin(std::numbers::pi / n);
+    const auto thin = sweep::radial_offsets(2.0, 8, 1.5);
+    EXPECT_GT(sweep::straight_ring_condition(r, thin, n, kMinAxialAspect * side), 3.0);
+    EXPECT_NEAR(sweep::axial_step(r, thin, n, 1.5, 3.0), kMinAxialAspect * side, 1e-12);
+    const auto two = sweep::radial_offsets(2.0, 2, 1.5);
+    const double cut = sweep::axial_step(r, two, n, 16.0, 3.0);
+    EXPECT_LE(sweep::straight_ring_condition(r, two, n, cut), 3.0);
+    EXPECT_GE(cut, kMinAxialAspect * side);
+}
+
 }  // namespace
 }  // namespace tubemesh

@@ -59,9 +59,18 @@ double axial_step(double radius, const std::vector<double>& offsets, int n, doub
     const double outer_side = 2 * (radius + offsets.back()) * std::sin(std::numbers::pi / n);
     const double wanted = axial_aspect * outer_side;
     if (!(max_condition > 0)) return wanted;
+    const double pyramid_floor = std::min(wanted, kMinAxialAspect * outer_side);
+    const double lowest = std::min(0.25 * wanted, pyramid_floor);
     double step = wanted;
-    while (step > 0.25 * wanted && straight_ring_condition(radius, offsets, n, step) > max_condition) step *= 0.95;
-    return std::max(step, 0.25 * wanted);
+    while (step > lowest && straight_ring_condition(radius, offsets, n, step) > max_condition) step *= 0.95;
+    step = std::max(step, lowest);
+    // More layers or more nodes around than the defaults that no step brings under the cap:
+    // shortening buys those hexes little and leaves the pyramids outer quads too short to
+    // stand on. (The economy's 4 nodes around miss the cap too; their quarter step is kept.)
+    const bool denser = offsets.size() > 3 || n > circumferential_count(radius, offsets.back());
+    if (denser && straight_ring_condition(radius, offsets, n, step) > max_condition)
+        return std::max(step, pyramid_floor);
+    return step;
 }
 
 }  // namespace sweep

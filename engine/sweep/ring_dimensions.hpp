@@ -11,7 +11,12 @@ std::vector<double> radial_offsets(double sweep_size, int layers, double grading
 
 // Centre-line distance between stations: `axial_aspect` times the side of the outer polygon,
 // 2 (r + St) sin(π/n), shortened while the ring's hexes on a straight pipe of radius r have a
-// condition number above `max_condition` (<= 0: never), by 5% steps to at most a quarter.
+// condition number above `max_condition` (<= 0: never), by 5% steps to a quarter, or further
+// down to kMinAxialAspect sides for a wanted step longer than 4 sides. Where no step in that
+// reach meets the cap and the ring has more than 2 layers or more nodes around than
+// circumferential_count gives, the step is not shortened below kMinAxialAspect sides (nor the
+// wanted step): the pyramids need room along the pipe more than those hexes need the little a
+// shorter step gives them.
 double axial_step(double radius, const std::vector<double>& offsets, int n, double axial_aspect,
                   double max_condition);
 

@@ -67,6 +67,13 @@ using SurfaceLookup = std::function<const SurfaceMap*(index_t face)>;
 // Throws tubemesh::Error for a non-positive or non-finite radius or St.
 int circumferential_count(double radius, double sweep_size);
 
+// Shortest axial step, over the outer polygon's side, that the pyramid layer takes: the
+// apexes of neighbouring outer quads stand one axial step apart, and the pyramid criteria
+// keep 0.65 mean edges of room around each, so shorter quads crowd each other (at 0.5 the
+// four-holes block fails in its bends, at 0.7 the crankshaft's oblique end). The front ends
+// refuse a smaller axial aspect; the condition cap goes below it only where that meets the cap.
+inline constexpr double kMinAxialAspect = 1.0;
+
 struct SweepOptions {
     // St, the ring's thickness (distance of the outer polygon from the wall), for every tube;
     // 0 takes twice the tube's mean radius (geom's default St). DiscreteGeometry::sweep_size.
@@ -86,9 +93,11 @@ struct SweepOptions {
     // paper's apex height; 0.71 at 1:2, 0.59 at 1:2.5) with a third fewer layers than 1:1.
     // The stations are resampled along the centre line by arc length to meet it.
     double axial_aspect = 1.5;
-    // Cap on the axial step: the step is shortened (by 5% steps, to at most a quarter) until
-    // the ring's hexes on a straight pipe have a condition number <= this. It binds when St is
-    // large against r (thin wall cells under long outer quads); 3.0 leaves room under the
+    // Cap on the axial step: the step is shortened (by 5% steps, to at most a quarter; where
+    // that cannot meet the cap on a denser ring, to no less than kMinAxialAspect outer sides:
+    // ring_dimensions.hpp)
+    // until the ring's hexes on a straight pipe have a condition number <= this. It binds when
+    // St is large against r (thin wall cells under long outer quads); 3.0 leaves room under the
     // acceptance bar of 4 for the extra distortion of bends and oblique ends. <= 0: no cap.
     double max_condition = 3.0;
     // Append the wall quads (group "pipe_<k>", k the 1-based tube index, normal into the

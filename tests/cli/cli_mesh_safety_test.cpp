@@ -51,7 +51,7 @@ TEST(CliMeshOptions, RefusedAtParseTimeInPlainNumbers) {
         {"--size inf", "--size: must be a positive number, got inf"},
         {"--sweep-size=-1", "--sweep-size: must be a positive number, got -1"},
         {"--gradation 0.5", "--gradation: must be a number from 1 to 4, got 0.5"},
-        {"--axial-aspect nan", "--axial-aspect: must be a number from 0.25 to 16, got nan"},
+        {"--axial-aspect nan", "--axial-aspect: must be a number from 1 to 16, got nan"},
         {"--tet-relax 17", "--tet-relax: must be a whole number from 0 to 16, got 17"},
     };
     TempDir dir;

@@ -71,7 +71,8 @@ inline constexpr Range kCircRange{4, 4096};
 inline constexpr Range kLayersRange{1, 8};
 // 0.2: a chord turning by 1.5 rad, a circle cut into 5; finer than 1e-4 asks for thousands.
 inline constexpr Range kChordalRange{1e-4, 0.2};
-inline constexpr Range kAxialAspectRange{0.25, 16.0};
+// Below kMinAxialAspect (engine/sweep/sweep.hpp) the pyramids on the rings' outer quads crowd each other.
+inline constexpr Range kAxialAspectRange{kMinAxialAspect, 16.0};
 inline constexpr Range kPyramidHeightRange{0.2, 3.0};
 inline constexpr Range kGradationRange{1.0, 4.0};
 inline constexpr Range kThreadsRange{1, 4096};

@@ -125,7 +125,8 @@ TEST_F(CliMeshErrors, HtmlReportMustBeHtml) {
 TEST_F(CliMeshErrors, InputWithoutOutput) {
     const auto r = run_command(cli() + " mesh " + q(pipe()));
     EXPECT_EQ(r.exit_code, 2);
-    EXPECT_NE(r.err.find("-o"), std::string::npos) << r.err;
+    for (const char* asked : {"-o", ".vtm", "--report", "--html"})
+        EXPECT_NE(r.err.find(asked), std::string::npos) << asked << " in: " << r.err;
 }
 
 }  // namespace

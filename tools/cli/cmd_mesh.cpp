@@ -1,7 +1,8 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--economy] [--size S] [--sweep-size St] [--circ N] [--layers L] [--chordal C]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--tet-relax R] [--move-apexes] [--max-elements N] [--report FILE.json] [--html FILE.html] [--quiet] [--solid K]
-// [--until STAGE] [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
+// [--tet-relax R] [--move-apexes] [--fixed-surface] [--max-elements N] [--report FILE.json] [--html FILE.html]
+// [--quiet] [--solid K | --assembly [--glue-tolerance D]] [--until STAGE] [--msh-ascii]
+// [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
 // CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
 // show progress, print the phases, Table 1 and where each surface group is, and write the mesh
 // to every OUT (format by extension: .msh, .vtu, .vtm, .inp), the report as JSON and as an HTML

@@ -18,6 +18,9 @@ std::string csv_field(const std::string& s) {
 
 std::string number(double v) { return fmt::format("{}", v); }
 
+// A measure of a kind the block has no cells of is blank, not a 0 that reads as a flat cell.
+std::string measure(std::int64_t cells, double v) { return cells > 0 ? number(v) : std::string(); }
+
 // The row with the smallest value of `measure` among done blocks that have cells of the kind.
 const BlockRecord* worst(const std::vector<BlockRecord>& rows, const std::function<bool(const BlockRecord&)>& has,
                          const std::function<double(const BlockRecord&)>& measure) {
@@ -98,13 +101,13 @@ std::string status_csv(const std::vector<BlockRecord>& rows) {
                                            std::to_string(r.hexes),
                                            std::to_string(r.pyramids),
                                            std::to_string(r.tets),
-                                           number(r.tet_collapse.min),
-                                           number(r.tet_collapse.mean),
-                                           number(r.pyramid_jacobian.min),
-                                           number(r.pyramid_jacobian.mean),
-                                           number(r.hex_jacobian.min),
-                                           number(r.hex_jacobian.mean),
-                                           number(r.hex_condition_max),
+                                           measure(r.tets, r.tet_collapse.min),
+                                           measure(r.tets, r.tet_collapse.mean),
+                                           measure(r.pyramids, r.pyramid_jacobian.min),
+                                           measure(r.pyramids, r.pyramid_jacobian.mean),
+                                           measure(r.hexes, r.hex_jacobian.min),
+                                           measure(r.hexes, r.hex_jacobian.mean),
+                                           measure(r.hexes, r.hex_condition_max),
                                            number(r.seconds)};
         for (const std::string& p : phases) {
             const auto it = std::find_if(r.phases.begin(), r.phases.end(), [&](const auto& ph) { return ph.first == p; });

@@ -116,6 +116,7 @@ MeshRun mesh_file(const std::filesystem::path& path, const MeshOptions& options,
     PhaseProgress progress(options.progress, "import", 1);
     ImportOptions import;
     import.solid = file.solid;
+    import.keyword_names = file.keyword_names;
     const Model model = import_model(path, import);
     progress.finish();
     return mesh_loaded(model, options, file.until, model_phase("import", seconds_since(t0), model));

@@ -49,6 +49,7 @@ struct MeshRun {
 struct MeshFileOptions {
     int solid = 0;  // which solid of the file, 1-based; 0: the file must hold exactly one
     Stage until = kLastStage;
+    bool keyword_names = false;  // messages name Python keywords, not flags (ImportOptions)
 };
 
 MeshRun mesh_file(const std::filesystem::path& path, const MeshOptions& options = {},

@@ -4,7 +4,14 @@
 #include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <BRep_Tool.hxx>
+#include <Precision.hxx>
 #include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
 
 #include "geom/model_occt.hpp"
 
@@ -49,6 +56,31 @@ BoundingBox Model::bounds() const {
     BRepBndLib::AddOptimal(impl_->solid, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
     BoundingBox b;
     box.Get(b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+    // The optimal box still stands off by about Precision::Confusion() (1e-7) on every side: a
+    // side within that of the outermost vertex is the vertex's plane (a block's side at 0, not
+    // -1e-07).
+    TopTools_IndexedMapOfShape vertices;
+    TopExp::MapShapes(impl_->solid, TopAbs_VERTEX, vertices);
+    if (vertices.IsEmpty()) return b;
+    Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (int i = 1; i <= vertices.Extent(); ++i) {
+        const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertices(i)));
+        lo = {std::min(lo.x, p.X()), std::min(lo.y, p.Y()), std::min(lo.z, p.Z())};
+        hi = {std::max(hi.x, p.X()), std::max(hi.y, p.Y()), std::max(hi.z, p.Z())};
+    }
+    const double off = 2 * Precision::Confusion();
+    const auto snap_low = [off](double& side, double vertex) {
+        if (side < vertex && vertex - side <= off) side = vertex;
+    };
+    const auto snap_high = [off](double& side, double vertex) {
+        if (side > vertex && side - vertex <= off) side = vertex;
+    };
+    snap_low(b.min.x, lo.x);
+    snap_low(b.min.y, lo.y);
+    snap_low(b.min.z, lo.z);
+    snap_high(b.max.x, hi.x);
+    snap_high(b.max.y, hi.y);
+    snap_high(b.max.z, hi.z);
     return b;
 }
 

@@ -75,7 +75,8 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
         py::gil_scoped_release release;
         try {
             result->run = preset ? geom::mesh_preset(name, options, s.until)
-                                 : geom::mesh_file(name, options, {.solid = s.solid.value_or(0), .until = s.until});
+                                 : geom::mesh_file(name, options,
+                                                   {.solid = s.solid.value_or(0), .until = s.until, .keyword_names = true});
         } catch (const Interrupted&) {
             interrupted = true;
         }

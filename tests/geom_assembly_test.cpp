@@ -8,6 +8,7 @@
 #include <gp_Trsf.hxx>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -28,9 +29,9 @@ namespace fs = std::filesystem;
 
 TopoDS_Solid box(gp_Pnt lo, gp_Pnt hi) { return BRepPrimAPI_MakeBox(lo, hi).Solid(); }
 
-// A unit box at `x0` along x with a straight pipe of diameter 0.04 along y through its middle,
+// A unit box at (x0, y0) with a straight pipe of diameter 0.04 along y through its middle,
 // or, with `through_x`, along x (from x0 to x0 + 1: its ends on the x faces).
-TopoDS_Solid piped_box(double x0, bool through_x = false) {
+TopoDS_Solid piped_box(double x0, bool through_x = false, double y0 = 0) {
     BlockSpec spec;
     spec.host.size = {1, 1, 1};
     PipeSpec pipe;
@@ -40,7 +41,7 @@ TopoDS_Solid piped_box(double x0, bool through_x = false) {
     spec.pipes.push_back(pipe);
     const BuiltBlock built = build_block(spec);
     gp_Trsf move;
-    move.SetTranslation(gp_Vec(x0, 0, 0));
+    move.SetTranslation(gp_Vec(x0, y0, 0));
     return TopoDS::Solid(solid_of(built.model).Moved(TopLoc_Location(move)));
 }
 
@@ -169,6 +170,28 @@ TEST(GeomAssembly, PipeThroughTheJointIsOnePipe) {
     EXPECT_GT(joint_quads, 0u);
     // Two rims (inlet and outlet), none at the joint.
     EXPECT_EQ(run.run.result.description.node_sets.size(), 2u);
+}
+
+// Tubes 1 and 2 are one pipe through the joint, tube 3 a pipe of its own: pipe_1 and pipe_2, no
+// gap where the second piece's number was.
+TEST(GeomAssembly, PipesAreNumberedWithoutGaps) {
+    const Assembly a = glue({piped_box(0, true), piped_box(1, true), piped_box(0, true, 1)});
+    const AssemblyRun run = mesh_assembly(a, small_run());
+    expect_conforming(run, a);
+    std::vector<std::string> pipes;
+    for (const std::string& g : surface_groups_of(run))
+        if (g.rfind("pipe_", 0) == 0) pipes.push_back(g);
+    EXPECT_EQ(pipes, (std::vector<std::string>{"pipe_1", "pipe_2"}));
+    // Each pipe's rims carry its name, and each pipe group is described by its CAD surface.
+    std::vector<std::string> rims;
+    for (const NamedNodeSet& set : run.run.result.description.node_sets) rims.push_back(set.name);
+    std::sort(rims.begin(), rims.end());
+    EXPECT_EQ(rims, (std::vector<std::string>{"pipe_1_inlet", "pipe_1_outlet", "pipe_2_inlet", "pipe_2_outlet"}));
+    const HybridMesh& mesh = run.run.result.mesh;
+    for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g)
+        if (mesh.surface_group_names[g].rfind("pipe_", 0) == 0) {
+            EXPECT_EQ(run.run.result.description.surface_groups[g].surface_kind, "cylinder") << mesh.surface_group_names[g];
+        }
 }
 
 TEST(GeomAssembly, StepKeepsTheSolidsNames) {

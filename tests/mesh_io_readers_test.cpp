@@ -72,10 +72,22 @@ TEST(MeshioReads, OurVtu) {
     EXPECT_EQ(seen["group_counts"].get<Counts>(), groups);
     EXPECT_EQ(seen["quality_nan"], 0);
     EXPECT_GT(seen["quality_min"].get<double>(), 0.1);  // the grid's cells are all fair
+    // No NaN anywhere (ParaView colours it apart, thresholds drop it): a measure a kind does not
+    // have is -1, which no defined value of these measures is.
+    const index_t tets = mesh.cell_count(CellKind::Tet), hexes = mesh.cell_count(CellKind::Hex);
+    ASSERT_GT(tets, 0u);
+    ASSERT_GT(hexes, 0u);
+    ASSERT_GT(mesh.cell_count(CellKind::Pyramid), 0u);
+    for (const char* name : {"quality", "scaled_jacobian", "min_dihedral", "aspect_ratio", "condition"})
+        EXPECT_EQ(seen["nan_counts"][name], 0) << name << " " << seen.dump();
+    EXPECT_EQ(seen["no_value_counts"]["min_dihedral"], mesh.cell_count() - tets);
+    EXPECT_EQ(seen["no_value_counts"]["aspect_ratio"], mesh.cell_count() - tets);
+    EXPECT_EQ(seen["no_value_counts"]["condition"], mesh.cell_count() - hexes);
+    EXPECT_EQ(seen["no_value_counts"]["quality"], 0);
 }
 
 // A name used twice gets "_2" in the field data; names with XML specials survive; in the
-// .vtm a face no cell has gets quality NaN and every block reads.
+// .vtm a face no cell has gets quality -1 (not NaN) and every block reads.
 TEST(MeshioReads, OurVtuAndVtmGroupTableEdgeCases) {
     TempDir dir;
     HybridMesh mesh = testing::conforming_patch();
@@ -95,7 +107,8 @@ TEST(MeshioReads, OurVtuAndVtmGroupTableEdgeCases) {
     write_vtm(mesh, dir / "mesh.vtm");
     const json blocks = run_script("meshio_summary.py", {(dir / "mesh.vtm").string()});
     ASSERT_TRUE(blocks.contains("blocks")) << blocks.dump();
-    EXPECT_EQ(blocks["blocks"]["boundary/loose"]["quality_nan"], 1) << blocks.dump();
+    EXPECT_EQ(blocks["blocks"]["boundary/loose"]["quality_nan"], 0) << blocks.dump();
+    EXPECT_EQ(blocks["blocks"]["boundary/loose"]["no_value_counts"]["quality"], 1) << blocks.dump();
     EXPECT_EQ(blocks["blocks"]["boundary/loose"]["cells"], json({{"triangle", 1}}));
     EXPECT_EQ(blocks["blocks"]["volume/pyramids"]["cells"], json({{"pyramid", 1}}));
     EXPECT_EQ(blocks["blocks"]["boundary/a&b <\"c\">"]["quality_nan"], 0);

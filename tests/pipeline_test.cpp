@@ -3,6 +3,7 @@
 // triangles on every non-wall face; after the pyramids one valid pyramid per outer quad.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -306,6 +307,28 @@ TEST(Pipeline, SlidSurfaceNodesStayInTheirFlatFaces) {
         moved += !same(v);
     }
     EXPECT_GT(moved, surface / 4) << "most nodes inside the block's flat faces should find a better place";
+    // A face on a plane x, y or z = c (the dam block's six sides): every node slid in it keeps c
+    // exactly, not c plus a rounding of 1e-33.
+    std::size_t planes = 0, on_planes = 0;
+    for (std::size_t g = 0; g < area_a.size(); ++g)
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto coordinate = [axis](const HybridMesh& m, index_t v) {
+                return axis == 0 ? m.x[v] : axis == 1 ? m.y[v] : m.z[v];
+            };
+            std::vector<index_t> nodes;
+            for (std::size_t t = 0; t < tris.group.size(); ++t)
+                if (tris.group[t] == g) nodes.insert(nodes.end(), &tris.nodes[3 * t], &tris.nodes[3 * t] + 3);
+            if (nodes.empty()) continue;
+            const double c = coordinate(a.mesh, nodes[0]);
+            if (!std::all_of(nodes.begin(), nodes.end(), [&](index_t v) { return coordinate(a.mesh, v) == c; })) continue;
+            ++planes;
+            for (index_t v : nodes) {
+                on_planes += !same(v);
+                ASSERT_EQ(coordinate(b.mesh, v), c) << b.mesh.surface_group_names[g] << " node " << v;
+            }
+        }
+    EXPECT_EQ(planes, 6u);
+    EXPECT_GT(on_planes, 0u);
     EXPECT_GT(b.quality.tet_collapse.min, a.quality.tet_collapse.min);
     EXPECT_GT(b.quality.tet_collapse.mean, a.quality.tet_collapse.mean);
     std::printf("slid surface nodes: %zu of %zu; tet min %.4f -> %.4f, mean %.4f -> %.4f\n", moved, surface,

@@ -93,4 +93,19 @@ TEST(TetSizeCaps, NoQuadsNoCapsAndBadOptionsAreErrors) {
     EXPECT_THROW(TetSizeCaps(s.mesh, s.quad, kS, kG, 0.0), Error);
 }
 
+// Triangles left too large warn of flat tets only where that is so: before the tets, that they
+// may be; once made, only when the worst is poor (the serpentine lift's 0.373 is not).
+TEST(TetSizeCaps, TooLargeLeftWarnsOnlyOfFlatTets) {
+    EXPECT_EQ(too_large_warning(0, 2, std::nullopt), "");
+    EXPECT_EQ(too_large_warning(0, 2, 0.01), "");
+    const std::string before = too_large_warning(4, 2, std::nullopt);
+    EXPECT_NE(before.find("4 triangles are still more than 2 times the tet size"), std::string::npos) << before;
+    EXPECT_NE(before.find("may be flat"), std::string::npos) << before;
+    EXPECT_EQ(too_large_warning(4, 2, 0.373), "");
+    EXPECT_EQ(too_large_warning(4, 2, kPoorTet), "");
+    const std::string flat = too_large_warning(4, 2, 0.05);
+    EXPECT_NE(flat.find("after 2 passes and the worst tet's collapse is 0.05"), std::string::npos) << flat;
+    EXPECT_NE(flat.find("--size"), std::string::npos) << flat;
+}
+
 }  // namespace

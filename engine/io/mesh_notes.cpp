@@ -1,5 +1,7 @@
 #include "engine/io/mesh_notes.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "engine/mesh/surface_groups.hpp"
@@ -14,9 +16,13 @@ std::string number(double v) {
     return text;
 }
 
+// A component 1e-12 of the largest or less is rounding (a normal's 8.7e-51, a centroid's 4e-34 on
+// a plane through 0): printed as 0.
 std::string triple(const Vec3& v) {
+    const double scale = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    const auto clean = [&](double c) { return std::abs(c) <= 1e-12 * scale ? 0.0 : c; };
     std::string s = "(";
-    s += number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")";
+    s += number(clean(v.x)) + ", " + number(clean(v.y)) + ", " + number(clean(v.z)) + ")";
     return s;
 }
 

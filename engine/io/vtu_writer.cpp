@@ -11,12 +11,14 @@
 //   group            UInt32  the region id (names in the field data and the comment)
 //   quality          Float64 the paper's measure: tet collapse, pyramid and hex scaled Jacobian
 //   scaled_jacobian  Float64 Verdict's, every kind (standard_measures.hpp)
-//   min_dihedral     Float64 tets, the smallest dihedral angle in degrees (NaN for other kinds;
+//   min_dihedral     Float64 tets, the smallest dihedral angle in degrees (-1 for other kinds;
 //                            ParaView's "Min Angle" takes the supplement at two of the six edges)
-//   aspect_ratio     Float64 tets (NaN for other kinds)
-//   condition        Float64 hexes (NaN for other kinds)
+//   aspect_ratio     Float64 tets (-1 for other kinds)
+//   condition        Float64 hexes (-1 for other kinds)
 // Boundary faces (.vtm only): kind 3 triangle, 4 quad; group, the surface group id; quality,
-// the value of the cell the face bounds (NaN if no cell has it, as in partial meshes).
+// the value of the cell the face bounds (-1 if no cell has it, as in partial meshes).
+// No NaN: ParaView colours NaN apart and its thresholds drop such cells, so a value that does not
+// exist is kNoValue, below every measure of a cell a written mesh may hold.
 // Field data: one Int32 array per group named after it, holding (id, dim) - the form meshio
 // gives Gmsh physical groups. An XML comment at the top lists the same, the kinds, the length
 // unit and where each surface group is. (The kind is also the VTK cell type ParaView shows.)
@@ -24,8 +26,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <set>
 #include <string>
@@ -91,6 +93,8 @@ constexpr std::array<CellMeasure, kMeasures> kMeasureOf = {CellMeasure::Primary,
                                                            CellMeasure::MinDihedral, CellMeasure::AspectRatio,
                                                            CellMeasure::Condition};
 
+constexpr double kNoValue = -1;
+
 // Every measure of every cell, per kind in cell order.
 using CellMeasures = std::array<std::array<std::vector<double>, kMeasures>, kCellKindCount>;
 
@@ -100,6 +104,8 @@ CellMeasures measure_cells(const HybridMesh& mesh, const std::filesystem::path& 
         for (std::size_t i = 0; i < kMeasures; ++i) {
             auto& values = m[static_cast<int>(k)][i];
             values = cell_measure(mesh, k, kMeasureOf[i]);
+            for (double& v : values)
+                if (std::isnan(v)) v = kNoValue;
             if (values.size() != mesh.cell_count(k))
                 throw Error("internal error: a quality measure gave the wrong number of values for '" + path.string() +
                             "'");
@@ -166,7 +172,7 @@ std::vector<std::string> comment_lines(const HybridMesh& mesh, const MeshDescrip
                     "region id, a boundary face's surface group id; names in the field data), quality (the paper's: tet "
                     "collapse, pyramid and hex scaled Jacobian; a face repeats its cell's), scaled_jacobian and "
                     "aspect_ratio (Verdict's), min_dihedral (the smallest dihedral angle of a tet, degrees), "
-                    "condition (hexes)");
+                    "condition (hexes); -1 where a kind has no such measure or a face no cell");
     for (std::size_t r = 0; r < mesh.region_names.size(); ++r)
         lines.push_back(std::string("region ") + std::to_string(r) + ": " + mesh.region_names[r]);
     for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g)
@@ -300,7 +306,7 @@ private:
         per_element("UInt32", "group", [](const GridBlock& k, index_t e) { return static_cast<std::uint32_t>((*k.ids)[e]); });
         for (std::size_t d = 0; d < grid_.data_names.size(); ++d)
             per_element("Float64", grid_.data_names[d], [d](const GridBlock& k, index_t e) {
-                return d < k.data.size() ? (*k.data[d])[e] : std::numeric_limits<double>::quiet_NaN();
+                return d < k.data.size() ? (*k.data[d])[e] : kNoValue;
             });
     }
 
@@ -328,8 +334,7 @@ std::array<std::vector<double>, kFaceKindCount> face_quality(const HybridMesh& m
     std::array<std::vector<double>, kFaceKindCount> q;
     for (FaceKind k : kAllFaceKinds)
         for (const CellFaceRef& ref : owners[static_cast<int>(k)])
-            q[static_cast<int>(k)].push_back(ref.cell == kNoIndex ? std::numeric_limits<double>::quiet_NaN()
-                                                                  : m[static_cast<int>(ref.kind)][0][ref.cell]);
+            q[static_cast<int>(k)].push_back(ref.cell == kNoIndex ? kNoValue : m[static_cast<int>(ref.kind)][0][ref.cell]);
     return q;
 }
 

@@ -145,7 +145,13 @@ SurfacePass mesh_faces(const PipelineInput& in, const MeshOptions& opt, const Sw
     return pass;
 }
 
-void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
+// Triangles the surface passes left too large for the tets beside them.
+struct TooLargeLeft {
+    std::size_t triangles = 0;
+    int passes = 0;
+};
+
+TooLargeLeft run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult& out) {
     const auto t0 = Clock::now();
     const std::unordered_set<index_t> walls = tube_wall_faces(in.geometry);
     index_t face_total = 0;
@@ -176,13 +182,6 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
         }
         out.surface_size_caps.insert(out.surface_size_caps.end(), caps.begin(), caps.end());
     }
-    if (left > 0)
-        out.warnings.push_back("surface: " + std::to_string(left) + " triangles are still more than " +
-                               std::to_string(int(kTooLarge)) + " times the tet size beside them after " +
-                               std::to_string(passes) +
-                               " passes; the tets on them may be flat (a smaller --size or a larger "
-                               "--gradation avoids it)");
-
     const surface::SurfaceMeshStats& s = pass.stats;
     PhaseReport r{"surface", seconds_since(t0), {}};
     r.counts = {{"faces", double(s.faces)},
@@ -194,6 +193,7 @@ void run_surface(const PipelineInput& in, const MeshOptions& opt, PipelineResult
                 {"too large left", double(left)}};
     progress.finish();
     out.phases.push_back(std::move(r));
+    return {left, passes};
 }
 
 // The tubes whose rings hold these outer quads (ascending fronts in, ascending tubes out).
@@ -311,8 +311,8 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism
     out.phases.push_back(std::move(r));
 }
 
-void run_phases(const PipelineInput& input, const MeshOptions& options, const Parallelism& par, Stage until,
-                PipelineResult& out) {
+TooLargeLeft run_phases(const PipelineInput& input, const MeshOptions& options, const Parallelism& par, Stage until,
+                        PipelineResult& out) {
     // After each stage, the counts so far and the estimate of the stages left against the cap.
     const auto reach = [&](Stage s) {
         out.reached = s;
@@ -320,15 +320,16 @@ void run_phases(const PipelineInput& input, const MeshOptions& options, const Pa
     };
     run_sweep(input, options, out);
     reach(Stage::Sweep);
-    if (until == Stage::Sweep) return;
-    run_surface(input, options, out);
+    if (until == Stage::Sweep) return {};
+    const TooLargeLeft left = run_surface(input, options, out);
     reach(Stage::Surface);
-    if (until == Stage::Surface) return;
+    if (until == Stage::Surface) return left;
     run_pyramids(input, options, out);
     reach(Stage::Pyramids);
-    if (until == Stage::Pyramids) return;
+    if (until == Stage::Pyramids) return left;
     run_tets(input, options, par, out);
     reach(Stage::Tets);
+    return left;
 }
 
 }  // namespace
@@ -342,8 +343,13 @@ PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& optio
     const auto limit = limit_threads(par);
 
     PipelineResult out;
-    run_phases(input, options, par, until, out);
+    const TooLargeLeft left = run_phases(input, options, par, until, out);
     out.quality = summarize_quality(out.mesh);
+    // Whether the triangles left too large made flat tets is known once the tets are made.
+    const std::string warning =
+        too_large_warning(left.triangles, left.passes,
+                          out.reached == Stage::Tets ? std::optional<double>(out.quality.tet_collapse.min) : std::nullopt);
+    if (!warning.empty()) out.warnings.push_back(warning);
     for (const PhaseReport& p : out.phases) out.seconds += p.seconds;
     if (options.check) check_result(out, options.progress);
     return out;

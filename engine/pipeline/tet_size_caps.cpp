@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "engine/mesh/vec3_ops.hpp"
 
@@ -36,6 +38,21 @@ TetSizeCaps::TetSizeCaps(const HybridMesh& mesh, std::span<const index_t> outer_
 }
 
 TetSizeCaps::~TetSizeCaps() = default;
+
+std::string too_large_warning(std::size_t left, int passes, std::optional<double> worst_tet) {
+    if (left == 0 || (worst_tet && *worst_tet >= kPoorTet)) return "";
+    std::string text = "surface: " + std::to_string(left) + " triangles are still more than " +
+                       std::to_string(int(kTooLarge)) + " times the tet size beside them after " +
+                       std::to_string(passes) + " passes";
+    if (worst_tet) {
+        char collapse[32];
+        std::snprintf(collapse, sizeof collapse, "%.3g", *worst_tet);
+        text += std::string(" and the worst tet's collapse is ") + collapse;
+    } else {
+        text += "; the tets on them may be flat";
+    }
+    return text + " (a smaller --size or a larger --gradation avoids it)";
+}
 
 std::vector<SizeSource> TetSizeCaps::caps(const HybridMesh& mesh, index_t first_triangle) const {
     const FaceBlock& tris = mesh.block(FaceKind::Tri);

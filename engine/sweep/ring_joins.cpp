@@ -76,21 +76,23 @@ void remap_ring(HybridMesh& mesh, SweepResult& sweep, TubeRing& b, const Station
         for (index_t& v : end.outer_nodes) v = map(v);
 }
 
-// Each chain of joined tubes takes the wall group of its first tube.
+// Each chain of joined tubes takes the wall group of its first tube, named after its pipe; the
+// wall groups left empty take the names after the last pipe's, so no two groups share a name.
 void one_group_per_chain(HybridMesh& mesh, SweepResult& sweep, const std::vector<RingJoin>& joins) {
-    std::vector<index_t> head(sweep.rings.size());
-    std::iota(head.begin(), head.end(), index_t{0});
-    const auto find = [&](index_t t) {
-        while (head[t] != t) t = head[t] = head[head[t]];
-        return t;
-    };
-    for (const RingJoin& j : joins) {
-        const index_t a = find(j.tube_a), b = find(j.tube_b);
-        head[std::max(a, b)] = std::min(a, b);
+    const std::vector<index_t> pipe = pipe_of_tubes(sweep.rings.size(), joins);
+    std::vector<index_t> first_tube, empty_groups;
+    for (const TubeRing& ring : sweep.rings) {
+        if (pipe[ring.tube] == first_tube.size()) first_tube.push_back(ring.tube);
+        else empty_groups.push_back(ring.wall_group);
     }
+    std::vector<index_t> named;
+    for (index_t t : first_tube) named.push_back(sweep.rings[t].wall_group);
+    named.insert(named.end(), empty_groups.begin(), empty_groups.end());
+    for (std::size_t k = 0; k < named.size(); ++k)
+        mesh.surface_group_names[named[k]] = "pipe_" + std::to_string(k + 1);
     FaceBlock& quads = mesh.block(FaceKind::Quad);
     for (TubeRing& ring : sweep.rings) {
-        ring.wall_group = sweep.rings[find(ring.tube)].wall_group;
+        ring.wall_group = sweep.rings[first_tube[pipe[ring.tube]]].wall_group;
         if (ring.first_boundary_face == kNoIndex) continue;
         const std::size_t first = ring.first_boundary_face, count = std::size_t{ring.stations - 1} * ring.circumferential;
         std::fill(quads.group.begin() + first, quads.group.begin() + first + count, ring.wall_group);
@@ -114,6 +116,26 @@ void drop_quads(HybridMesh& mesh, SweepResult& sweep, const std::vector<char>& d
 }
 
 }  // namespace
+
+std::vector<index_t> pipe_of_tubes(std::size_t tubes, const std::vector<RingJoin>& joins) {
+    std::vector<index_t> head(tubes);
+    std::iota(head.begin(), head.end(), index_t{0});
+    const auto find = [&](index_t t) {
+        while (head[t] != t) t = head[t] = head[head[t]];
+        return t;
+    };
+    for (const RingJoin& j : joins) {
+        const index_t a = find(j.tube_a), b = find(j.tube_b);
+        head[std::max(a, b)] = std::min(a, b);
+    }
+    std::vector<index_t> pipe(tubes, kNoIndex);
+    index_t pipes = 0;
+    for (index_t t = 0; t < tubes; ++t) {
+        const index_t h = find(t);  // a chain's first tube, so h <= t: its number is known
+        pipe[t] = h == t ? pipes++ : pipe[h];
+    }
+    return pipe;
+}
 
 double join_ring_ends(HybridMesh& mesh, SweepResult& sweep, const std::vector<RingJoin>& joins, double tolerance) {
     double gap = 0;

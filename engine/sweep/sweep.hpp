@@ -155,7 +155,7 @@ struct TubeRing {
     // [first_boundary_face, + m·n + 2·L·n): its wall quads, then its end quads, in the orders
     // above. kNoIndex otherwise.
     index_t first_boundary_face = kNoIndex;
-    index_t wall_group = kNoIndex;                  // surface group "pipe_<tube + 1>"
+    index_t wall_group = kNoIndex;                  // surface group "pipe_<tube + 1>" (joined: its pipe's)
     std::array<index_t, 2> host_group{kNoIndex, kNoIndex};  // "face_<host1>", "face_<host2>"
     std::array<RingEnd, 2> ends;
 

@@ -95,7 +95,11 @@ void mark_sliding_points(const HybridMesh& mesh, std::span<const index_t> front,
         }
         const double len = norm(sum);
         if (!(len > 0)) continue;
-        const Vec3 normal = (1.0 / len) * sum;
+        // A plane at x, y or z = c: the unit axis exactly (1/len * len may round to 1 - 2^-53), so
+        // a slid point keeps its coordinate c to the last bit.
+        const auto sign = [](double c) { return c > 0 ? 1.0 : c < 0 ? -1.0 : 0.0; };
+        const bool on_axis = (sum.x == 0) + (sum.y == 0) + (sum.z == 0) == 2;
+        const Vec3 normal = on_axis ? Vec3{sign(sum.x), sign(sum.y), sign(sum.z)} : (1.0 / len) * sum;
         // Flat: no fan corner off the plane by more than a rounding error of the edges.
         bool flat = true;
         for (std::size_t k = i; k < j && flat; ++k)

@@ -277,7 +277,12 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
     for (std::size_t k = 0; k < solids.size(); ++k)
         for (const std::string& w : prepared[k].warnings) r.warnings.push_back(solids[k].name + ": " + w);
     if (options.check) check_result(r, options.progress);
-    describe_groups(whole, tube_search, r.mesh, r.description);
+    // "pipe_<k>" is the k-th pipe (joined tubes are one): described by its first tube.
+    TubeSearch pipes;
+    const std::vector<index_t> pipe = pipe_of_tubes(tube_search.tubes.size(), joins);
+    for (std::size_t t = 0; t < pipe.size(); ++t)
+        if (pipe[t] == pipes.tubes.size()) pipes.tubes.push_back(tube_search.tubes[t]);
+    describe_groups(whole, pipes, r.mesh, r.description);
 
     run.source = a.report().source;
     run.format = a.report().format;

@@ -124,9 +124,10 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
         const int n = static_cast<int>(solids.size());
         report.solids_in_file = n;
         if (options.solid == 0 && n > 1)
-            throw Error(quoted(path) + " holds " + std::to_string(n) +
-                        " solids and tubemesh meshes one at a time: choose one with --solid N (N from 1 to " +
-                        std::to_string(n) + ")");
+            throw Error(quoted(path) + " holds " + std::to_string(n) + " solids: choose one with " +
+                        (options.keyword_names ? "solid=N" : "--solid N") + " (N from 1 to " + std::to_string(n) +
+                        "), or mesh them all as one conforming mesh with `tubemesh mesh --assembly`" +
+                        (options.keyword_names ? " (the Python module has no assembly)" : ""));
         if (options.solid < 0 || options.solid > n)
             throw Error("--solid " + std::to_string(options.solid) + " is out of range: " + quoted(path) + " holds " +
                         plural(n, "solid", "solids") + " (N from 1 to " + std::to_string(n) + ")");

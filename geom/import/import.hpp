@@ -12,6 +12,9 @@ struct ImportOptions {
     int solid = 0;
     // Run ShapeFix_Shape (default precision) on the chosen solid; its changes go to the report.
     bool heal = true;
+    // How the message for several solids names the ways out: the command line's (--solid N,
+    // `tubemesh mesh --assembly`) or the Python module's keywords (solid=N; it has no assembly).
+    bool keyword_names = false;
 };
 
 // Reads a STEP (.step/.stp, AP203/214/242), IGES (.iges/.igs) or BREP (.brep) file and keeps the

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/status.hpp"
 #include "tests/cli/batch_runs.hpp"
 #include "tests/support/outside_readers.hpp"
 
@@ -24,6 +25,38 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+
+// A block without pyramids or hexes (an all-tet block, a failed or pending one) has blank
+// measures for those kinds: a 0 would read as a flat cell.
+TEST(BatchStatusCsv, KindsWithoutCellsHaveBlankMeasures) {
+    batch::BlockRecord tets_only{.id = "plain", .status = "done", .nodes = 40, .tets = 100};
+    tets_only.tet_collapse = {0.25, 0.75};
+    batch::BlockRecord pending{.id = "later"};
+    std::istringstream csv(batch::status_csv({tets_only, pending}));
+    std::vector<std::vector<std::string>> rows;
+    for (std::string line; std::getline(csv, line);) {
+        rows.emplace_back();
+        std::istringstream fields(line);
+        for (std::string f; std::getline(fields, f, ',');) rows.back().push_back(f);
+        if (!line.empty() && line.back() == ',') rows.back().emplace_back();
+    }
+    ASSERT_EQ(rows.size(), 3u);
+    std::map<std::string, std::string> plain, later;
+    for (std::size_t c = 0; c < rows[0].size(); ++c) {
+        plain[rows[0][c]] = c < rows[1].size() ? rows[1][c] : "";
+        later[rows[0][c]] = c < rows[2].size() ? rows[2][c] : "";
+    }
+    EXPECT_EQ(plain["tets"], "100");
+    EXPECT_EQ(plain["pyramids"], "0");
+    EXPECT_EQ(plain["tet_collapse_min"], "0.25");
+    EXPECT_EQ(plain["tet_collapse_mean"], "0.75");
+    for (const char* blank : {"pyramid_jacobian_min", "pyramid_jacobian_mean", "hex_jm_min", "hex_jm_mean", "hex_cond_max"}) {
+        EXPECT_EQ(plain.count(blank), 1u) << blank;
+        EXPECT_EQ(plain[blank], "") << blank;
+        EXPECT_EQ(later[blank], "") << blank;
+    }
+    EXPECT_EQ(later["tet_collapse_min"], "");
+}
 
 TEST(CliMakeDam, SameSeedSameDamAndEveryBlockHasItsRole) {
     TempDir tmp;

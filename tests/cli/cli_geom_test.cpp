@@ -76,6 +76,8 @@ TEST_F(CliGeomPaperEx1, InspectReportsOneTubeAndTheSizingPlan) {
     EXPECT_NE(r.out.find("  from S = "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("  Dc = "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("metre"), std::string::npos) << "the file's unit:\n" << r.out;
+    // The block's sides, not OpenCASCADE's box around them (-1e-07) nor a vertex's -5e-17.
+    EXPECT_NE(r.out.find("bounding box (0, 0, 0) to (15, 25, 4)"), std::string::npos) << r.out;
 }
 
 TEST_F(CliGeomPaperEx1, InspectJsonHasOneTubeOfDiameter004) {

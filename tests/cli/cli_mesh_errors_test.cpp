@@ -80,7 +80,8 @@ TEST_F(CliMeshErrors, SeveralSolidsWithoutSolidOption) {
     b.Add(two, box(0, 1));
     b.Add(two, box(5, 2));
     tubemesh::geom::write_step_shape(two, dir / "two.step", "millimetre");
-    expect_error(q(dir / "two.step"), "", "--solid");
+    expect_error(q(dir / "two.step"), "", "choose one with --solid N (N from 1 to 2)");
+    expect_error(q(dir / "two.step"), "", "or mesh them all as one conforming mesh with `tubemesh mesh --assembly`");
 }
 
 TEST_F(CliMeshErrors, NegativeSize) { expect_error(q(pipe()), "--size=-1", "--size: must be a positive number"); }
@@ -125,7 +126,8 @@ TEST_F(CliMeshErrors, HtmlReportMustBeHtml) {
 TEST_F(CliMeshErrors, InputWithoutOutput) {
     const auto r = run_command(cli() + " mesh " + q(pipe()));
     EXPECT_EQ(r.exit_code, 2);
-    EXPECT_NE(r.err.find("-o"), std::string::npos) << r.err;
+    for (const char* asked : {"-o", ".vtm", "--report", "--html"})
+        EXPECT_NE(r.err.find(asked), std::string::npos) << asked << " in: " << r.err;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "engine/io/mesh_io.hpp"
@@ -159,6 +160,20 @@ TEST(CliMeshReport, NoInputNoOutputWritesTheDamBlockFiles) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "dam_block.msh"));
     EXPECT_TRUE(std::filesystem::exists(dir / "dam_block.vtu"));
+}
+
+// A report alone is a whole run: the mesh is made and checked, only the report files are written.
+TEST(CliMeshReport, ReportsAloneWriteOnlyTheReports) {
+    TempDir dir;
+    ASSERT_EQ(run_command(cli() + " make-block --preset straight-pipe -o " + q(dir / "x.step")).exit_code, 0);
+    const auto html = run_command(cli() + " mesh " + q(dir / "x.step") + " --quiet --html " + q(dir / "r.html"));
+    ASSERT_EQ(html.exit_code, 0) << html.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "r.html"));
+    const auto json = run_command(cli() + " mesh " + q(dir / "x.step") + " --quiet --report " + q(dir / "r.json"));
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "r.json"));
+    const auto files = std::distance(std::filesystem::directory_iterator(dir.path()), {});
+    EXPECT_EQ(files, 3);  // x.step, r.html, r.json: no mesh file
 }
 
 }  // namespace

@@ -4,6 +4,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
 
 #include "tests/support/cli_command.hpp"
 #include "tests/support/process.hpp"
@@ -90,6 +95,32 @@ TEST(CliMesh, BuiltInDamBlockWithoutInput) {
     EXPECT_TRUE(std::filesystem::exists(dir / "dam.inp"));
     const auto checked = run_command(cli() + " check " + q(dir / "dam.msh"));
     EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
+}
+
+// The README's synopsis of `mesh` names every flag the program's help lists.
+TEST(CliMesh, ReadmeSynopsisHasEveryFlagOfTheHelp) {
+    const auto help = run_command(cli() + " mesh --help");
+    ASSERT_EQ(help.exit_code, 0) << help.err;
+    std::ifstream in(std::string(TUBEMESH_SOURCE_DIR) + "/README.md");
+    ASSERT_TRUE(in) << "README.md";
+    // The synopsis: from "tubemesh mesh " to the next line that does not continue it.
+    std::string synopsis, line;
+    bool inside = false;
+    while (std::getline(in, line)) {
+        if (line.rfind("tubemesh mesh ", 0) == 0) inside = true;
+        else if (inside && line.rfind("    ", 0) != 0) break;
+        if (inside) synopsis += line + "\n";
+    }
+    ASSERT_FALSE(synopsis.empty());
+    const std::regex flag("(^|[\\s,\\[|])(--[a-z][a-z-]*)");
+    std::set<std::string> listed, written;
+    for (std::sregex_iterator it(help.out.begin(), help.out.end(), flag), end; it != end; ++it) listed.insert((*it)[2]);
+    for (std::sregex_iterator it(synopsis.begin(), synopsis.end(), flag), end; it != end; ++it) written.insert((*it)[2]);
+    listed.erase("--help");
+    if (synopsis.find("[-o ") != std::string::npos) listed.erase("--output");  // written as its short -o
+    EXPECT_GT(listed.size(), 20u) << help.out;
+    for (const std::string& f : listed) EXPECT_TRUE(written.count(f)) << f << " is not in README's synopsis:\n" << synopsis;
+    for (const std::string& f : written) EXPECT_TRUE(listed.count(f)) << f << " is in README's synopsis, not in the help";
 }
 
 }  // namespace

@@ -22,6 +22,27 @@ def test_missing_file_has_the_clis_message(cli, tmp_path):
     assert isinstance(e.value, RuntimeError)
 
 
+def test_several_solids_name_the_keyword_and_the_assembly(tmp_path):
+    import gmsh
+
+    step = str(tmp_path / "two.step")
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
+        gmsh.model.occ.addBox(5, 0, 0, 2, 2, 3)
+        gmsh.model.occ.synchronize()
+        gmsh.write(step)
+    finally:
+        gmsh.finalize()
+    with pytest.raises(tubemesh.Error) as e:
+        tubemesh.mesh(step)
+    message = str(e.value)
+    assert "holds 2 solids" in message
+    assert "solid=N (N from 1 to 2)" in message and "--solid" not in message
+    assert "the Python module has no assembly" in message and "tubemesh mesh --assembly" in message
+
+
 def test_bad_options_name_the_keyword():
     with pytest.raises(tubemesh.Error, match="^size must be a positive number, got -1$"):
         tubemesh.mesh("paper-ex3", size=-1)

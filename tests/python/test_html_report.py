@@ -77,6 +77,25 @@ def test_the_page_holds_the_run_and_a_small_cut(opened):
         str(theirs["tets"]), str(theirs["pyramids"]), str(theirs["hexes"])]
 
 
+def test_every_kind_of_the_cut_has_its_faces(opened):
+    # Each kind's surface is drawn: the pyramids between the ring and the tets too, and every
+    # worst cell has faces for its marker.
+    view = page_data(opened["report"])["view"]
+    kinds = view["cells"]["kind"]
+    faces_of = [0] * len(kinds)
+    faces = view["faces"]
+    i = 0
+    while i < len(faces):
+        faces_of[faces[i]] += 1
+        i += 2 + faces[i + 1]
+    for kind in (0, 1, 2):
+        assert sum(n for n, k in zip(faces_of, kinds) if k == kind) > 0, kind
+    pyramids = [c for c, k in enumerate(kinds) if k == 1]
+    assert pyramids and all(faces_of[c] > 0 for c in pyramids)  # each shows at least its base
+    assert all(faces_of[c] > 0 for c in view["worst"])
+    assert any(kinds[c] == 1 for c in view["worst"])
+
+
 def test_the_papers_column_is_beside_ours(opened):
     # The built-in dam block is the paper's first example: its Table 1 column beside the mesh's.
     paper = opened["paper"]

@@ -1,7 +1,8 @@
 """Reads a mesh file with meshio and prints what meshio sees, as JSON: point count, cell
 counts per meshio cell type, names of cell data, cell sets and point sets with their sizes,
 and for tubemesh's .vtu: how many cells carry each "group" value, the field data
-(group name -> [id, dim]) and the quality range. A .vtm gives {"blocks": {"BLOCK/NAME": the
+(group name -> [id, dim]), the quality range and, per floating-point cell data array, the count
+of NaN and of -1 values. A .vtm gives {"blocks": {"BLOCK/NAME": the
 same for that block's .vtu}}.
 
 usage: meshio_summary.py FILE.vtu|FILE.inp|FILE.vtm
@@ -41,6 +42,15 @@ def summary(path):
         for values in mesh.cell_data["group"]:
             groups.update(str(int(v)) for v in values)
         out["group_counts"] = dict(groups)
+    # Per floating-point cell data array: how many values are NaN and how many are the -1 of
+    # "no such measure".
+    out["nan_counts"] = {}
+    out["no_value_counts"] = {}
+    for name, blocks in mesh.cell_data.items():
+        values = [float(v) for block in blocks for v in block]
+        if blocks and blocks[0].dtype.kind == "f":
+            out["nan_counts"][name] = sum(1 for v in values if math.isnan(v))
+            out["no_value_counts"][name] = sum(1 for v in values if v == -1)
     if "quality" in mesh.cell_data:
         values = [float(v) for block in mesh.cell_data["quality"] for v in block]
         finite = [v for v in values if not math.isnan(v)]

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "engine/mesh/vec3_ops.hpp"
 #include "geom/sizing/element_budget.hpp"
 #include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
@@ -141,7 +142,11 @@ nlohmann::json inspect_json(const geom::Model& model, const std::vector<int>& lo
 void print_text(const geom::Model& model, const std::vector<int>& loops_per_face, const geom::TubeSearch& found,
                 const geom::SizePlan& plan, const Bound& bound) {
     const geom::ImportReport& report = model.report();
-    const geom::BoundingBox b = source_bounds(model);
+    geom::BoundingBox b = source_bounds(model);
+    // A side 1e-12 of the box or less from 0 is a plane through 0 (a vertex at -5e-17): print 0.
+    const double size = norm(b.max - b.min);
+    for (double* v : {&b.min.x, &b.min.y, &b.min.z, &b.max.x, &b.max.y, &b.max.z})
+        if (std::abs(*v) <= 1e-12 * size) *v = 0;
     fmt::print("{} ({}, {}): {} faces, {} edges, volume {:.6g}\n", report.source, report.format, report.length_unit,
                model.face_count(), model.edge_count(), source_volume(model));
     fmt::print("bounding box ({:.6g}, {:.6g}, {:.6g}) to ({:.6g}, {:.6g}, {:.6g})\n\n", b.min.x, b.min.y, b.min.z,

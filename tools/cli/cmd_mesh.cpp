@@ -1,7 +1,8 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--economy] [--size S] [--sweep-size St] [--circ N] [--layers L] [--chordal C]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--tet-relax R] [--move-apexes] [--max-elements N] [--report FILE.json] [--html FILE.html] [--quiet] [--solid K]
-// [--until STAGE] [--msh-ascii] [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
+// [--tet-relax R] [--move-apexes] [--fixed-surface] [--max-elements N] [--report FILE.json] [--html FILE.html]
+// [--quiet] [--solid K | --assembly [--glue-tolerance D]] [--until STAGE] [--msh-ascii]
+// [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
 // CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
 // show progress, print the phases, Table 1 and where each surface group is, and write the mesh
 // to every OUT (format by extension: .msh, .vtu, .vtm, .inp), the report as JSON and as an HTML
@@ -131,7 +132,8 @@ Command add_mesh_command(CLI::App& app) {
                     "CAD file (.step .stp .iges .igs .brep); without it, the built-in dam block (paper-ex1)");
     cmd->add_option("-o,--output", args->outputs,
                     "Mesh file to write (.msh Gmsh, .vtu ParaView volume, .vtm ParaView blocks per group, .inp "
-                    "Abaqus / CalculiX); repeat for several. Default without IN: dam_block.msh and dam_block.vtu")
+                    "Abaqus / CalculiX); repeat for several. Without -o only the reports asked for are written; "
+                    "with neither IN, -o, --report nor --html: dam_block.msh and dam_block.vtu")
         ->allow_extra_args(false);  // `-o a.msh IN` must not take IN as a second output
     args->size_option = cmd->add_option("--size", args->size,
                                         "Overall mesh size S (default: bounding-box diagonal / 25, at least 1.3 St)")
@@ -238,8 +240,12 @@ Command add_mesh_command(CLI::App& app) {
     return {cmd, [args]() -> int {
         const Stage until = run::stage_named(args->until_name, run::Naming::Flags);
         args->settings.until = until;
-        if (args->outputs.empty()) {
-            if (!args->input.empty()) throw Error("mesh needs -o OUT.msh|.vtu|.inp for '" + args->input + "'");
+        // A report alone is a run that writes only the report; with nothing asked for, the dam block's
+        // default files.
+        if (args->outputs.empty() && args->report.empty() && args->html.empty()) {
+            if (!args->input.empty())
+                throw Error("mesh needs -o OUT.msh|.vtu|.vtm|.inp, --report FILE.json or --html FILE.html for '" +
+                            args->input + "'");
             args->outputs = {"dam_block.msh", "dam_block.vtu"};
         }
         check_outputs(*args, until);

@@ -103,33 +103,48 @@ nlohmann::json cut_view_json(const geom::MeshRun& run, const std::array<std::vec
     for (const CellRef& c : cells) scale = std::max(scale, c.distance2);
     scale = scale > 0 ? std::sqrt(scale) : 1.0;
 
-    // Faces by sorted node set: a face two cut cells share is hidden between them.
-    std::map<std::array<index_t, 4>, int> seen;
+    // Faces by kind and sorted node set: a face two cut cells of one kind share is hidden between
+    // them. Each kind keeps its own closed surface, so the pyramids between the ring and the tets
+    // show, and hiding one kind in the viewer leaves the others whole.
+    std::map<std::array<index_t, 5>, int> seen;
     auto face_key = [&](CellKind kind, index_t c, const LocalFace& lf) {
         const auto nodes = mesh.cell(kind, c);
-        std::array<index_t, 4> key{kNoIndex, kNoIndex, kNoIndex, kNoIndex};
+        std::array<index_t, 5> key{kNoIndex, kNoIndex, kNoIndex, kNoIndex, static_cast<index_t>(kind)};
         for (int i = 0; i < lf.size; ++i) key[i] = nodes[lf.node[i]];
-        std::sort(key.begin(), key.end());
+        std::sort(key.begin(), key.begin() + 4);
         return key;
     };
     for (const CellRef& c : cells)
         for (int i = 0; i < topology(c.kind).face_count; ++i) ++seen[face_key(c.kind, c.index, topology(c.kind).face[i])];
 
+    // The worst few of each kind in the cut, worst first.
+    constexpr std::size_t kWorstPerKind = 5;
+    std::array<std::vector<std::pair<double, std::size_t>>, kCellKindCount> ranked;
+    for (std::size_t ci = 0; ci < cells.size(); ++ci)
+        ranked[static_cast<int>(cells[ci].kind)].push_back({primary[static_cast<int>(cells[ci].kind)][cells[ci].index], ci});
+    nlohmann::json worst = nlohmann::json::array();
+    std::vector<char> is_worst(cells.size(), 0);
+    for (auto& r : ranked) {
+        std::sort(r.begin(), r.end());
+        for (std::size_t i = 0; i < std::min(kWorstPerKind, r.size()); ++i) {
+            worst.push_back(r[i].second);
+            is_worst[r[i].second] = 1;
+        }
+    }
+
     std::map<index_t, index_t> local;  // mesh point -> index in "points"
     nlohmann::json points = nlohmann::json::array(), faces = nlohmann::json::array();
     nlohmann::json kinds = nlohmann::json::array(), indices = nlohmann::json::array(), quality = nlohmann::json::array();
-    std::array<std::vector<std::pair<double, std::size_t>>, kCellKindCount> ranked;
     for (std::size_t ci = 0; ci < cells.size(); ++ci) {
         const CellRef& c = cells[ci];
-        const double q = primary[static_cast<int>(c.kind)][c.index];
         kinds.push_back(static_cast<int>(c.kind));
         indices.push_back(c.index);
-        quality.push_back(rounded(q));
-        ranked[static_cast<int>(c.kind)].push_back({q, ci});
+        quality.push_back(rounded(primary[static_cast<int>(c.kind)][c.index]));
         const CellTopology& t = topology(c.kind);
         const auto nodes = mesh.cell(c.kind, c.index);
         for (int i = 0; i < t.face_count; ++i) {
-            if (seen[face_key(c.kind, c.index, t.face[i])] > 1) continue;
+            // A worst cell keeps every face, so its marker has a place even inside its kind's surface.
+            if (!is_worst[ci] && seen[face_key(c.kind, c.index, t.face[i])] > 1) continue;
             faces.push_back(ci);
             faces.push_back(t.face[i].size);
             for (int k = 0; k < t.face[i].size; ++k) {
@@ -144,13 +159,6 @@ nlohmann::json cut_view_json(const geom::MeshRun& run, const std::array<std::vec
                 faces.push_back(it->second);
             }
         }
-    }
-    // The worst few of each kind in the cut, worst first.
-    constexpr std::size_t kWorstPerKind = 5;
-    nlohmann::json worst = nlohmann::json::array();
-    for (auto& r : ranked) {
-        std::sort(r.begin(), r.end());
-        for (std::size_t i = 0; i < std::min(kWorstPerKind, r.size()); ++i) worst.push_back(r[i].second);
     }
     return {{"scale", scale},
             {"points", points},

@@ -1,8 +1,9 @@
 #pragma once
 // What the HTML report's 3D view shows: the cells nearest to a plane through the middle of the
 // first tube, normal to its axis, on one side of it — a cut through the hex ring, the pyramids
-// and the tets around them, as in the paper's Fig. 5, 9 and 12 — reduced to the faces of that
-// set of cells that are not shared by two of its cells (all the viewer can see).
+// and the tets around them, as in the paper's Fig. 5, 9 and 12 — reduced, kind by kind, to the
+// faces not shared by two of its cells of that kind (each kind's surface, which the viewer shows
+// or hides as a whole), plus every face of the worst cells (where their markers go).
 //
 // Coordinates are in the cut's frame: the plane is z = 0, the cells lie at z <= 0 (by their
 // centroids, so cells crossing the plane are whole), x and y span the plane, and lengths are

@@ -618,15 +618,19 @@ TEST(Pyramids, NodeInsideEveryCandidateMakesTheFrontHopeless) {
     EXPECT_TRUE(same_mesh(u.m, before));
 }
 
-TEST(Pyramids, HopelessFrontThrowsAndLeavesTheMeshUnchanged) {
-    // A ring 0.05 from the face x = 0: no apex fits between them.
+// A ring 0.05 from the face x = 0: no apex fits between them.
+RingScene hopeless_scene() {
     const int segments = 4;
     const double length = segments * 1.5 * kWidth;
     BoxGrid box;
     box.lines[0] = {0, kR + 0.05, 2 * (kR + 0.05), 5};
     box.lines[1] = {0, 1.5, 3.0, 4.5, 6.0};
     box.lines[2] = spaced(0, length, 2);
-    RingScene s = scene::build_ring_scene(box, {scene::straight_ring(kR + 0.05, 3.0, 0, length, segments, kR, kPipe)});
+    return scene::build_ring_scene(box, {scene::straight_ring(kR + 0.05, 3.0, 0, length, segments, kR, kPipe)});
+}
+
+TEST(Pyramids, HopelessFrontThrowsAndLeavesTheMeshUnchanged) {
+    RingScene s = hopeless_scene();
     const HybridMesh before = s.mesh;
     std::string what;
     try {
@@ -643,13 +647,7 @@ TEST(Pyramids, HopelessFrontThrowsAndLeavesTheMeshUnchanged) {
 
 // Given the rings' St, the failure names it and a smaller value to try.
 TEST(Pyramids, HopelessFrontNamesTheSweepSizeAndAValueToTry) {
-    const int segments = 4;
-    const double length = segments * 1.5 * kWidth;
-    BoxGrid box;
-    box.lines[0] = {0, kR + 0.05, 2 * (kR + 0.05), 5};
-    box.lines[1] = {0, 1.5, 3.0, 4.5, 6.0};
-    box.lines[2] = spaced(0, length, 2);
-    RingScene s = scene::build_ring_scene(box, {scene::straight_ring(kR + 0.05, 3.0, 0, length, segments, kR, kPipe)});
+    RingScene s = hopeless_scene();
     PyramidInput in{s.front_quads, s.boundary_triangles, s.obstacle_quads, s.pyramid_region};
     in.sweep_size = kR - kPipe;
     std::string what;

@@ -15,17 +15,12 @@
 
 #include "engine/mesh/vec3_ops.hpp"
 #include "geom/model_occt.hpp"
+#include "geom/sizing/sizing.hpp"
 
 namespace tubemesh::geom {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The sizing guards' room (sizing.hpp): a ring and its pyramids take 3.2 St towards a face,
-// two rings and a pyramid layer 4.2 St between two tubes; 95 % of that so the apex does not
-// just touch.
-constexpr double kFaceRoom = 3.2;
-constexpr double kTubeRoom = 4.2;
-constexpr double kMargin = 0.95;
 // The fan of rays per direction: this far to either side, around the axis and along it.
 constexpr double kFanDegrees = 25;
 
@@ -176,7 +171,7 @@ RingRoom tube_room(const Model& model, const std::vector<TubeInfo>& tubes, std::
     RingRoom room;
     if (line.size() < 2) return room;
     const double r = tube.radius_max;
-    const double face_reach = kFaceRoom * st / kMargin, tube_reach = kTubeRoom * st / kMargin;
+    const double face_reach = kFaceRoom * st / kGuardMargin, tube_reach = kTubeRoom * st / kGuardMargin;
     // Own segments this close along the line are the wall the ray leaves, not another run.
     const double own_skip = std::numbers::pi * (r + tube_reach);
     const Frames f = frames(line);
@@ -222,7 +217,7 @@ RingRoom tube_room(const Model& model, const std::vector<TubeInfo>& tubes, std::
                 for (const Segment& sg : near_segments)
                     to_tube = std::min(to_tube, ray_capsule(origin, e, sg.a, sg.b, sg.r));
             }
-            const double allowed = kMargin * std::min(to_face / kFaceRoom, to_tube / kTubeRoom);
+            const double allowed = kGuardMargin * std::min(to_face / kFaceRoom, to_tube / kTubeRoom);
             if (allowed < st) {
                 thick[i * dirs + k] = allowed;
                 thin = true;

@@ -13,12 +13,6 @@ namespace tubemesh::geom {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Room the pyramid layer needs in front of a ring, over St: about 1.2 h (measured on pipes
-// side by side and over a face with the pyramid step's default criteria), h the outer quads' mean
-// edge, which reaches 1.8 St.
-constexpr double kPyramidRoom = 2.2;
-// A guard cuts St to this fraction of its limit, so the apex does not just touch.
-constexpr double kGuardMargin = 0.95;
 constexpr double kDiagonalDivisor = 25;
 constexpr double kSizeOverSweep = 1.3;
 // A St from the sweep share stays within this many tube radii: a ring of 4 nodes thicker than that
@@ -88,14 +82,14 @@ void apply_rules(SizePlan& plan, const Clearances& c, const Extremes& e) {
 }
 
 void apply_guards(SizePlan& plan, const Clearances& c, const Extremes& e) {
-    const double reach = (1 + kPyramidRoom) * plan.sweep_size;
+    const double reach = kFaceRoom * plan.sweep_size;
     if (!plan.local_ring && reach >= c.dcb)
-        change(plan, "guard: boundary", kGuardMargin * c.dcb / (1 + kPyramidRoom),
+        change(plan, "guard: boundary", kGuardMargin * c.dcb / kFaceRoom,
                "a ring of thickness St plus the 2.2 St its pyramids need reaches " + fmt(reach) + " from " +
                    tube_name(c.dcb_tube) + ", but face " + std::to_string(c.dcb_face) + " is " + distance_text(c.dcb) + " away");
-    const double gap = (2 + kPyramidRoom) * plan.sweep_size;
+    const double gap = kTubeRoom * plan.sweep_size;
     if (!plan.local_ring && gap >= c.dc)
-        change(plan, "guard: rings", kGuardMargin * c.dc / (2 + kPyramidRoom),
+        change(plan, "guard: rings", kGuardMargin * c.dc / kTubeRoom,
                "two rings of thickness St and the 2.2 St their pyramids need take " + fmt(gap) + " between " +
                    tube_name(c.dc_tube_a) + " and " + tube_name(c.dc_tube_b) + ", which are " + distance_text(c.dc) + " apart");
     if (std::isfinite(e.rc)) {

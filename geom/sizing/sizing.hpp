@@ -40,6 +40,16 @@
 
 namespace tubemesh::geom {
 
+// Room the pyramid layer needs in front of a ring, over St: about 1.2 h (measured on pipes side
+// by side and over a face with the pyramid step's default criteria), h the outer quads' mean
+// edge, which reaches 1.8 St. So a ring and its pyramids take (1 + kPyramidRoom) St towards a
+// face and two of them (2 + kPyramidRoom) St between two tubes.
+inline constexpr double kPyramidRoom = 2.2;
+inline constexpr double kFaceRoom = 1 + kPyramidRoom;
+inline constexpr double kTubeRoom = 2 + kPyramidRoom;
+// A guard cuts St to this fraction of its limit, so the apex does not just touch.
+inline constexpr double kGuardMargin = 0.95;
+
 struct SizingOptions {
     double size = 0;        // S; 0 chooses the default
     double sweep_size = 0;  // St; 0 chooses the default

@@ -53,8 +53,8 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
     if (tubes.tubes.empty()) return;
     auto radius = [&](int t) { return tubes.tubes[static_cast<std::size_t>(t)].radius_min; };
     // The thickest ring the distances allow, whatever St was asked for: a ring and its
-    // pyramids take 3.2 St towards a face and 4.2 St between two pipes (sizing's guards).
-    const double by_face = plan.dcb / 3.2, by_pipes = plan.dc / 4.2;
+    // pyramids take kFaceRoom St towards a face and kTubeRoom St between two pipes (sizing's guards).
+    const double by_face = plan.dcb / kFaceRoom, by_pipes = plan.dc / kTubeRoom;
     if (by_face <= by_pipes && plan.dcb_tube >= 0 && by_face < kThinnestRing * radius(plan.dcb_tube)) {
         const double r = radius(plan.dcb_tube);
         const double dcb = shown(plan.dcb, r);
@@ -63,7 +63,7 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
             "under {:.3g} thick, less than {} of the radius, and take millions of elements; move the pipe at least "
             "{:.3g} away from face {}",
             pipe(tubes, plan.dcb_tube), dcb, plan.dcb_face, dcb / r, r, dcb == 0 ? " - it touches the face" : "",
-            dcb / 3.2, kThinnestRing, 0.2 * r, plan.dcb_face));
+            dcb / kFaceRoom, kThinnestRing, 0.2 * r, plan.dcb_face));
     }
     if (by_pipes < by_face && plan.dc_tube_a >= 0) {
         const double r = std::min(radius(plan.dc_tube_a), radius(plan.dc_tube_b));
@@ -74,7 +74,7 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
                 "between them would be under {:.3g} thick, less than {} of the radius, and take millions of "
                 "elements; keep the walls at least {:.3g} apart",
                 pipe(tubes, plan.dc_tube_a), pipe(tubes, plan.dc_tube_b), dc, dc / r, r,
-                dc == 0 ? " - they touch" : "", dc / 4.2, kThinnestRing, 0.25 * r));
+                dc == 0 ? " - they touch" : "", dc / kTubeRoom, kThinnestRing, 0.25 * r));
     }
 }
 

@@ -99,6 +99,7 @@ std::vector<DamBlock> dam_blocks(const DamParams& p) {
             s.bend_radius = round_to(s.spacing * rng.uniform(p.bend_share.lo, p.bend_share.hi), 1e-3);
             s.end_margin = s.spacing / 2;
             s.inlet = s.outlet = "y+";
+            s.height_radii = p.pipe_height_radii;
             const bool mirrored = rng.integer(0, 1) == 1;
             if (pipeless_ends && ((c == 1 && l == 1) || (c == p.columns && l == p.lifts))) {
                 b.role = l == 1 ? "foundation" : "crest";

@@ -33,6 +33,9 @@ struct DamParams {
     Range bend_share{0.4, 0.5};
     // The foundation and crest blocks go without a pipe (below); false gives every block one.
     bool pipeless_ends = true;
+    // The serpentines' centre above each lift's bottom, in pipe radii (a cooling pipe laid on the
+    // lift joint: about 1.5); 0: at mid-height.
+    double pipe_height_radii = 0;
     // Straight pipes along the dam's axis (x), each through every column of one lift at a
     // quarter of the lift's common height, below the serpentines: coils laid over a whole lift,
     // crossing the column joints. Each block a pipe passes holds its piece, from face x- to x+.

@@ -1,6 +1,7 @@
 #include "geom/builders/serpentine.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "engine/core/types.hpp"
 
@@ -52,7 +53,15 @@ BlockSpec serpentine_spec(const SerpentineParams& p, const std::string& name) {
         throw Error("serpentine: end margin and bend radius leave no straight run along the lift");
 
     const double offset = (across - (runs - 1) * p.spacing) / 2;
-    const double z = p.size.z / 2;
+    const double radius = p.diameter / 2;
+    if (p.height_radii != 0 && !(p.height_radii > 1 && (p.height_radii + 1) * radius < p.size.z)) {
+        std::ostringstream s;
+        s << "serpentine: the pipe's centre " << p.height_radii
+          << " radii above the lift's bottom: give more than 1 (the pipe would cut the bottom) and less than "
+          << p.size.z / radius - 1 << " (the pipe would cut the top)";
+        throw Error(s.str());
+    }
+    const double z = p.height_radii > 0 ? p.height_radii * radius : p.size.z / 2;
     // s runs from the inlet face into the lift; a maps it back to the coordinate.
     auto point = [&](double s, int run) {
         const double a = in.plus ? along - s : s;

@@ -1,6 +1,7 @@
 #pragma once
 // Serpentine cooling loops of a concrete dam lift: one pipe running back and forth across the
-// lift at mid-height, U-bends at the ends, entering and leaving through side faces.
+// lift at mid-height (or at a given height, as pipes laid on a lift joint are), U-bends at the
+// ends, entering and leaving through side faces.
 #include <string>
 
 #include "geom/builders/block_spec.hpp"
@@ -13,6 +14,9 @@ struct SerpentineParams {
     double spacing = 1.5;     // between neighbouring runs
     double bend_radius = 0.75;  // of the U-bends; at most spacing / 2
     double end_margin = 1.0;    // from the outermost point of a bend's centre line to the face
+    // The pipe's centre above the lift's bottom, in pipe radii; 0: at mid-height. Above 1, and the
+    // pipe below the top.
+    double height_radii = 0;
     // Side faces: "x-", "x+", "y-" or "y+". The runs go along the inlet's axis; the outlet is on
     // the same face (an even number of runs) or the opposite one (odd).
     std::string inlet = "x-";

@@ -81,6 +81,32 @@ TEST(CliMakeDam, SameSeedSameDamAndEveryBlockHasItsRole) {
     EXPECT_DOUBLE_EQ(l2["origin"][2].get<double>(), l1["origin"][2].get<double>() + l1["size"][2].get<double>());
 }
 
+// Cooling pipes laid on the lift joint: every serpentine's centre line at the height asked for,
+// in pipe radii above its lift's bottom; a height that would cut the bottom is refused.
+TEST(CliMakeDam, PipeHeightPutsEverySerpentineThatManyRadiiAboveItsLiftsBottom) {
+    TempDir tmp;
+    const auto r = run_command(cli() + " make-dam --columns 2 --lifts 2 --pipe-height 1.5 --specs -o " +
+                               q(tmp / "d") + " " + kSmallDam);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    int pipes = 0;
+    for (const char* id : {"c1-l2", "c2-l1"}) {
+        const json spec = json::parse(read_text(tmp / "d" / (std::string(id) + ".json")));
+        ASSERT_EQ(spec["pipes"].size(), 1u) << id;
+        const json& pipe = spec["pipes"][0];
+        const double radius = pipe["diameter"].get<double>() / 2;
+        for (const json& point : pipe["points"]) {
+            EXPECT_NEAR(point[2].get<double>(), 1.5 * radius, 1e-12 * radius) << id;
+            ++pipes;
+        }
+    }
+    EXPECT_GT(pipes, 4);
+    const auto low = run_command(cli() + " make-dam --columns 2 --lifts 2 --pipe-height 0.9 --specs -o " +
+                                 q(tmp / "e") + " " + kSmallDam);
+    EXPECT_EQ(low.exit_code, 2);
+    EXPECT_NE(low.err.find("--pipe-height"), std::string::npos) << low.err;
+    EXPECT_FALSE(fs::exists(tmp / "e"));
+}
+
 // `make-dam ... -o DIR` as an argument list, for signal_when_created.
 std::vector<std::string> make_dam_args(const fs::path& dir) {
     std::vector<std::string> args = {TUBEMESH_CLI, "make-dam", "--columns", "2", "--lifts", "2"};

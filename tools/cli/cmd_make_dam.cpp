@@ -139,6 +139,10 @@ Command add_make_dam_command(CLI::App& app) {
                     "Straight pipes along the dam's axis, each through every column of one lift a quarter up it, "
                     "crossing the column joints; each block holds its piece (default 0)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--pipe-height", a->dam.pipe_height_radii,
+                    "The serpentine pipes' centre this many pipe radii above each lift's bottom, as pipes laid on "
+                    "the lift joint (above 1; default: at mid-height)")
+        ->check(CLI::Range(1.0, 1e6));
     add_range(cmd, "--width", a->dam.width, "Column width along the dam's axis, drawn per column");
     add_range(cmd, "--depth", a->dam.depth, "Column depth, upstream to downstream, drawn per column");
     add_range(cmd, "--lift-height", a->dam.lift_height, "Lift height, drawn per block");

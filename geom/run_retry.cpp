@@ -32,8 +32,9 @@ void RunRetry::after(const RetryableFailure& failure, const SizePlan& plan, std:
         if (sweep_given_)
             throw Error(fmt::format("{} (St = {:.6g} was given: try --sweep-size {:.6g}, or leave St out to let "
                                     "tubemesh thin the rings that lack room)",
-                                    failure.what(), st, kSweepFactor * st));
-        if (!room_failure_) room_failure_ = failure.what();
+                                    failure.finding, st, kSweepFactor * st));
+        // The engine's advice names the first attempt's St: the retry's own replaces it.
+        if (!room_failure_) room_failure_ = failure.finding;
         plan_sweep_ = plan.sweep_size;
         std::vector<double>& sizes = options_.sweep.tube_sweep_size;
         sizes.resize(tube_count, 0.0);

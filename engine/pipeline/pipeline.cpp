@@ -228,7 +228,8 @@ void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineRe
         try {
             p = build_pyramids(mesh, in, opt.pyramids);
         } catch (const PyramidRoomError& e) {
-            throw RetryableFailure(e.what(), RetryableFailure::Cause::PyramidRoom, tubes_of_fronts(out.sweep, e.fronts));
+            throw RetryableFailure(e.what(), RetryableFailure::Cause::PyramidRoom, tubes_of_fronts(out.sweep, e.fronts),
+                                   e.finding);
         }
     }
     // The tet region's boundary: free pyramid triangles, then the uncovered surface triangles.

@@ -217,12 +217,15 @@ struct PipelineResult {
 class RetryableFailure : public Error {
 public:
     enum class Cause { PyramidRoom, Recovery };
-    RetryableFailure(const std::string& message, Cause cause, std::vector<index_t> tubes = {})
-        : Error(message), cause(cause), tubes(std::move(tubes)) {}
+    RetryableFailure(const std::string& message, Cause cause, std::vector<index_t> tubes = {},
+                     std::string finding = {})
+        : Error(message), cause(cause), tubes(std::move(tubes)), finding(finding.empty() ? message : finding) {}
     Cause cause;
     // PyramidRoom: the tubes (indices into DiscreteGeometry::tubes, ascending) whose rings hold the
     // fronts that found no pyramid. Empty for Recovery.
     std::vector<index_t> tubes;
+    // The failure without the engine's own advice, for a caller whose advice replaces it.
+    std::string finding;
 };
 
 // Runs the phases up to and including `until`, summarises the quality, then checks the mesh

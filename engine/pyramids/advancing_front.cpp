@@ -138,7 +138,7 @@ void AdvancingFront::fail(const std::vector<index_t>& still, int round) const {
                 " with edge length " + std::to_string(f.h) + ", whose last try node was refused as " +
                 verdict_name(choice_[first].refusal) +
                 ". A ring there is too close to another ring or to a face for its quad size (the criteria need "
-                "about 1.2 edge lengths of room in front of a quad): " + advice() + " or move the pipe",
+                "about 1.2 edge lengths of room in front of a quad)", advice() + " or move the pipe",
                 std::move(fronts));
 }
 

@@ -183,8 +183,9 @@ struct PyramidResult {
 // a caller can tell which rings lack room (the pipeline retries them thinner).
 class PyramidRoomError : public Error {
 public:
-    PyramidRoomError(const std::string& message, std::vector<index_t> fronts)
-        : Error(message), fronts(std::move(fronts)) {}
+    PyramidRoomError(const std::string& finding, const std::string& advice, std::vector<index_t> fronts)
+        : Error(finding + ": " + advice), finding(finding), fronts(std::move(fronts)) {}
+    std::string finding;          // what failed and where, without the advice (a caller may give its own)
     std::vector<index_t> fronts;  // front quad indices, ascending
 };
 

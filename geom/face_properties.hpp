@@ -18,8 +18,8 @@ struct FaceProperties {
 FaceProperties face_properties(const Model& model, int face_id);
 
 // The solid's volume and the total area of its faces but `skip` (ids), by the fixed-order
-// integration: within a few % on solids with thin B-spline pipes, where the adaptive one of
-// face_properties and Model::volume takes about a second on the serpentine lift. For estimates.
+// integration: close enough on solids with thin B-spline pipes, where the adaptive one of
+// face_properties and Model::volume is far slower (bench/results/tuning-notes.md). For estimates.
 struct RoughMeasures {
     double volume = 0;
     double area = 0;

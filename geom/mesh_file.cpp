@@ -17,7 +17,7 @@ namespace tubemesh::geom {
 
 namespace {
 
-// The analysis limits DESIGN.md gives: tets the paper reports down to 0.26, hexes 1 <= Cond <= 4.
+// The analysis limits docs/architecture.md gives: tets the paper reports down to 0.26, hexes 1 <= Cond <= 4.
 constexpr double kTetCollapseFloor = 0.2;
 constexpr double kHexConditionCeiling = 4;
 

@@ -42,8 +42,8 @@ const ImportReport& Model::report() const { return impl_->report; }
 int Model::scale_exponent() const { return impl_->scale_exponent; }
 
 double Model::volume() const {
-    // The adaptive integration: the fixed-order default was off by 60% of a thin B-spline
-    // pipe's volume (0.24 for 0.15 along the 190 m serpentine), the adaptive one by 0.2%, in 0.1 s.
+    // The adaptive integration: the fixed-order default is far off a thin B-spline pipe's
+    // volume (bench/results/tuning-notes.md).
     GProp_GProps props;
     BRepGProp::VolumeProperties(impl_->solid, props, 1e-6);
     return props.Mass();

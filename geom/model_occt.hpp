@@ -22,7 +22,7 @@ struct Model::Impl {
     // The fixed-order volume integration of `solid` (BRepGProp::VolumeProperties' defaults),
     // when whoever made the model already ran it: import does, to refuse solids without a
     // positive volume, and rough_measures reuses it (on a block with curved B-spline holes
-    // it costs as much as a third of the tet step: paper-ex2, 0.59 G instructions).
+    // it costs as much as a good part of the tet step).
     std::optional<double> fixed_order_volume;
     // The solid is the source's scaled by 10^-scale_exponent (geom/working_scale.hpp).
     int scale_exponent = 0;

@@ -1,6 +1,6 @@
 #pragma once
-// Several solids that share faces meshed into one conforming hybrid mesh (DESIGN.md "Beyond one
-// solid"), face first:
+// Several solids that share faces meshed into one conforming hybrid mesh (docs/architecture.md,
+// "Beyond one solid"), face first:
 //  * the sweep and the surface run once over the whole assembly (run_pipeline up to Surface):
 //    every tube's ring, then every face that is not a tube wall triangulated once, a face two
 //    solids share included;

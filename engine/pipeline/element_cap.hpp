@@ -25,8 +25,8 @@ struct ElementCap {
 };
 
 // The share of the refined tets the tet step keeps at the least: its relaxation and optimisation
-// removed 2-6 % of them on the presets and the reference cases (3-2 flips and edge removals
-// outnumber 2-3 flips), so 0.8 is a bound with room.
+// remove a few per cent (3-2 flips and edge removals outnumber 2-3 flips), so 0.8 is a bound with
+// room (bench/results/tuning-notes.md).
 inline constexpr double kRefinedTetsKept = 0.8;
 
 // Throws tubemesh::Error when, during the tet step's refinement, the elements of `mesh` plus

@@ -1,5 +1,5 @@
 #pragma once
-// The meshing pipeline (DESIGN.md "Data flow"): sweep -> surface -> pyramids -> tets,
+// The meshing pipeline (docs/architecture.md, "Data flow"): sweep -> surface -> pyramids -> tets,
 // on plain data only — geom/prepare.hpp turns a CAD model into a PipelineInput.
 //
 //  * Sweep: a hex ring around every tube (engine/sweep), region "hex_ring"; the rings' wall

@@ -1,6 +1,6 @@
 #pragma once
-// The check a pipeline result must pass before anything is written (DESIGN.md: "the mesh
-// passes the conformity and validity check before any file is written").
+// The check a pipeline result must pass before anything is written (docs/architecture.md:
+// the mesh passes the conformity and validity check before any file is written).
 //
 // check_mesh (engine/check/mesh_check.hpp) on the whole mesh, with what each stage may
 // legitimately lack (pipeline.hpp, "What the mesh holds when the pipeline stops early"):

@@ -38,12 +38,11 @@ namespace tubemesh {
 inline constexpr double kTooLarge = 2.0;
 // What a capped place asks for, in volume sizes. The face mesher accepts triangles up to 1.3
 // times its target (FaceMeshOptions' accept ratio), so 1.25 keeps the new triangles under
-// 1.25 · 1.3 = 1.63 h, clear of kTooLarge: with 1.5 (up to 1.95 h) the serpentine lift's side
-// walls kept 4 triangles at 2.07 h through six passes.
+// 1.25 · 1.3 = 1.63 h, clear of kTooLarge; 1.5 left triangles over it (bench/results/tuning-notes.md).
 inline constexpr double kCapped = 1.25;
 
-// A worst tet below this collapse is one a too-large triangle may have made (such a cap was 0.226
-// where the caps were needed; the reference cases' worst tets are above 0.3).
+// A worst tet below this collapse is one a too-large triangle may have made: below the reference
+// cases' worst tets, above the ones the caps were needed for (bench/results/tuning-notes.md).
 inline constexpr double kPoorTet = 0.25;
 
 // The warning for `left` triangles still too large after `passes` surface passes, "" for none.

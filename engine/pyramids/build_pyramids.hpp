@@ -75,10 +75,9 @@ struct PyramidOptions {
     // wedge_height_factor·h, shifted along the quad away from the edge until the wedge
     // reaches wedge_degrees, by at most wedge_max_shift of the quad's length (wedge.hpp).
     // The tet filling that wedge has it as a dihedral angle. wedge_degrees = 0 disables it.
-    // Measured on straight pipes square to their hosts (a dam lift): the paper's candidates
-    // leave 34 degrees (tet collapse 0.29); 48 degrees at 0.8 h gives 0.36 there. At 50-52
-    // degrees some placed apexes were refused and host nodes taken again; apexes at 0.7 h
-    // took paper-ex3's oblique end pyramids below 0.45.
+    // The paper's candidates leave a narrow wedge on straight pipes square to their hosts; the
+    // angle and height are the best found before apexes are refused or oblique end pyramids
+    // lose quality (bench/results/tuning-notes.md).
     double wedge_degrees = 48.0;
     double wedge_height_factor = 0.8;
     double wedge_max_shift = 0.3;

@@ -196,7 +196,7 @@ HexQuality hex_quality(const std::array<Vec3, 8>& p) {
 // i.e.
 //     x = 2 · min over the 4 tets and their 4 corners of det / (l1 l2 l3),
 //     measure = x if x < 1 else 2 - x.
-// This normalisation gives both reference values of DESIGN.md:
+// This normalisation gives both reference values of docs/architecture.md:
 //  * all edges equal (unit base, apex height 1/sqrt(2)): the worst tet corner is a base
 //    corner on a diagonal, det / (1 · sqrt(2) · 1) = (1/sqrt(2)) / sqrt(2) = 1/2, so x = 1;
 //  * the paper's ideal apex, height H = 0.98154 over a unit base: the worst corner is the

@@ -1,5 +1,5 @@
 #pragma once
-// Element quality measures (DESIGN.md, "Quality measures"), per element and per mesh.
+// Element quality measures (docs/architecture.md, "Quality measures"), per element and per mesh.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -28,8 +28,8 @@ constexpr double kGoodCosine = 0.6427876096865394;  // cos 50°
 // Neighbouring triangles whose sizes (mean edge lengths) differ by more than this are evened out.
 constexpr double kGradingRatio = 1.4;
 // ... as long as no angle of the moved vertex's fan drops below this (or below the fan's worst).
-// 35 degrees left a few pairs above the surface's 1.5 where only a move through a 30-35 degree
-// fan could even them out; such moves are rare enough to keep 95 % of triangles above 40.
+// 35 degrees left pairs over the surface's grading that only a move through a narrower fan
+// evens out; such moves are rare (bench/results/tuning-notes.md).
 constexpr double kGradingCosine = 0.8660254037844386;  // cos 30°
 
 double mean_edge(const Vec3& a, const Vec3& b, const Vec3& c) {

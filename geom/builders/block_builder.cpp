@@ -196,7 +196,7 @@ BuiltBlock build_block(const BlockSpec& spec) {
         // All pipes in one compound, the boolean's single tool: OpenCASCADE then never
         // intersects one pipe with another (sub-shapes of one argument are taken as disjoint,
         // which check_clearances has made sure of). As separate tools, those pairwise tests
-        // took 5 s of a 5.5 s cut for 12 pipes; one cut is also independent of any order.
+        // took most of the cut; one cut is also independent of any order.
         // Unchecked pipes may cross: then each is a tool of its own.
         BRep_Builder builder;
         TopoDS_Compound pipes;

@@ -36,8 +36,8 @@ enum class Frame { PlaneNormal, CorrectedFrenet, Discrete };
 
 // MakePipeShell rather than MakePipe for B-spline paths: MakePipe failed (null result or crash)
 // on long interpolated paths with straight runs, where the Frenet frame is undefined. The frame
-// matters for speed too: along a 3D path the corrected Frenet frame gave walls of ~6000 poles
-// whose cut took seconds (or failed), the discrete frame ~1500 poles cut in 0.1 s.
+// matters for speed too: along a 3D path the corrected Frenet frame gives walls of several
+// times the poles, whose cut is far slower or fails (bench/results/tuning-notes.md).
 std::optional<TopoDS_Solid> sweep_shell(const TopoDS_Wire& spine, const TopoDS_Wire& profile, const CentreLine& line,
                                         double radius, Frame frame) {
     BRepOffsetAPI_MakePipeShell sweep(spine);
@@ -48,7 +48,7 @@ std::optional<TopoDS_Solid> sweep_shell(const TopoDS_Wire& spine, const TopoDS_W
     }
     // The default 1e-4 is absolute: too loose for a 0.032 pipe in a 20 m block, needlessly
     // tight for a 12 mm oil hole. Relative to the radius instead. Degree 5 rather than the
-    // default 11: walls of ~40% fewer poles, and the boolean that cuts them ~30% faster.
+    // default 11: walls of fewer poles, and a faster boolean to cut them.
     const double tol = std::clamp(1e-3 * radius, 1e-7, 1e-3);
     sweep.SetTolerance(tol, tol, 1e-3);
     sweep.SetMaxDegree(5);

@@ -1,6 +1,6 @@
 #pragma once
 // How thick each tube's hex ring may be, per place along it and direction around it
-// (DESIGN.md, "Sizing is local"): from the clearance in D directions around the centre line
+// (docs/architecture.md, "Sizing is local"): from the clearance in D directions around the centre line
 // at its points (TubeInfo::centre_line) to the faces of the model (not tube walls, not the
 // tube's own hosts) and to the tubes' walls (other tubes, and the tube's own runs farther
 // along it), over the room a ring and its pyramids take there: the sizing guards' 3.2 St

@@ -16,8 +16,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDiagonalDivisor = 25;
 constexpr double kSizeOverSweep = 1.3;
 // A St from the sweep share stays within this many tube radii: a ring of 4 nodes thicker than that
-// has hexes over the analysis limit Cond 4 (the dam block at its default S: St 25 r, Cond 7.0;
-// 13 r: 3.9).
+// has hexes over the analysis limit Cond 4 (bench/results/tuning-notes.md).
 constexpr double kShareMaxOverRadius = 12.5;
 
 std::string tube_name(int index) { return "tube " + std::to_string(index + 1); }

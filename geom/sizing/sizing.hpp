@@ -12,9 +12,9 @@
 // The paper also sets S = 1.3 St with every rule. We do not: its own examples contradict it
 // (Table 1's second example keeps tets of about S = 1.1 around holes whose bends cut St far
 // below 1.1 / 1.3), and tying S to a cut St multiplies the element count by orders of
-// magnitude (paper-ex2 at --size 1.1: S would fall to 0.18 and give 2.1 M tets instead of
-// about 10 k). S only follows St where it was derived from it: the default S below is
-// recomputed from the final St. Cutting St therefore never raises S above the user's value.
+// magnitude (bench/results/tuning-notes.md). S only follows St where it was derived from it:
+// the default S below is recomputed from the final St. Cutting St therefore never raises S
+// above the user's value.
 //
 // The rules alone still let a ring collide: St = 1.4 Dcb is thicker than the gap it sits in.
 // So three guards follow, each cutting St to 95% of its limit when broken, with a ring of

@@ -98,10 +98,9 @@ TopoDS_Shape polyline_shape(const std::vector<Vec3>& line) {
 }
 
 // How far the wire given to BRepExtrema may stray from the centre line, over the tube's
-// radius: rounding level, so a straight run of a pipe (its samples are about a diameter apart,
-// 625 on a 20 m pipe of diameter 0.032) becomes one edge and a bend keeps every point. Each
-// vertex costs BRepExtrema a point classification on the face: a lift with 10 straight pipes
-// spent 3.2 G instructions (0.3 s) on those.
+// radius: rounding level, so a straight run of a pipe (its samples are about a diameter apart)
+// becomes one edge and a bend keeps every point. Each vertex costs BRepExtrema a point
+// classification on the face (bench/results/tuning-notes.md).
 constexpr double kWireTolerance = 1e-9;
 
 }  // namespace
@@ -157,7 +156,7 @@ Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& t
     // distance from a face to the line is the least over the pieces, and a piece whose box is
     // no nearer than the best distance so far cannot lower it. Nearest boxes first, so one or
     // two BRepExtrema calls on short wires do what one call on the whole line did (a gently
-    // curved 25 m pipe keeps all its 640 samples: paper-ex1's sizes phase spent 0.06 s there).
+    // curved pipe keeps all its samples).
     struct Piece {
         TopoDS_Shape wire;
         Bnd_Box box;

@@ -5,8 +5,7 @@
 // A circular tube is the set of points within r of its centre line, so the distance from its
 // wall to anything outside it is the distance to the centre line minus r. Distances are taken
 // to the tubes' centre-line polylines (TubeInfo::centre_line) minus r_max: exact up to the
-// polylines' 1%-of-r chord error, and far cheaper than BRepExtrema between B-spline walls
-// (seconds per pair on a long serpentine pipe).
+// polylines' 1%-of-r chord error, and far cheaper than BRepExtrema between B-spline walls.
 #include <limits>
 #include <vector>
 
@@ -46,8 +45,8 @@ struct HoleClearance {
 std::vector<HoleClearance> measure_hole_clearances(const Model& model, const std::vector<HoleGroup>& holes);
 
 // Diagonal of the solid's bounding box, for the default S: BRepBndLib::Add over the faces
-// that are no tube's wall. Not Model::bounds(): its optimal box took 2 s on a 190 m serpentine
-// pipe wall. Not the walls either: a B-spline wall's control polygon inflates a plain box, and
+// that are no tube's wall. Not Model::bounds(): its optimal box is slow on long B-spline pipe
+// walls. Not the walls either: a B-spline wall's control polygon inflates a plain box, and
 // the walls lie inside the box of the other faces anyway.
 double box_diagonal(const Model& model, const std::vector<TubeInfo>& tubes);
 // That box itself (all zero for a model without faces).

@@ -35,7 +35,7 @@ struct PaperRow {
 };
 
 // Counts, nodes and Table 1's quality rows, then the all-tet reference. The pyramids are
-// compared in different measures: the paper's Q_p, ours Verdict's scaled Jacobian (DESIGN.md).
+// compared in different measures: the paper's Q_p, ours Verdict's scaled Jacobian (docs/architecture.md).
 std::vector<PaperRow> paper_rows(const PaperExample& paper, const QualitySummary& q, index_t nodes);
 
 // "Paper's Table 1, Example N, beside this mesh" and one line per row.

@@ -50,7 +50,7 @@ bool is_present(const RecoveryMesh& m, const Target& g, ReaderScratch& s) {
 // f(i, ball of first[i]) for every i, in parallel, with the mesh only read meanwhile. The
 // indices go in order of their first vertex, so a ball is walked once per run of equal first
 // vertices in a chunk instead of once per item: a front point starts about three front edges
-// and two front triangles (serpentine lift: 396k walks -> 111k).
+// and two front triangles.
 template <class F>
 void with_ball_of_first(const RecoveryMesh& m, const std::vector<index_t>& first, F&& f) {
     std::vector<index_t> order(first.size());
@@ -76,8 +76,8 @@ void with_ball_of_first(const RecoveryMesh& m, const std::vector<index_t>& first
 // Whether each target is present now, in parallel. A front edge once present stays so (no flip
 // removes a locked edge, and a Steiner point's cavity never holds one inside), and so does a
 // front triangle once faces are locked: the serial loops below ask again only about the
-// targets missing here and make the same decisions as when they asked about every one (those
-// serial questions, one ball walk each, took 0.15-0.2 s on the serpentine lift).
+// targets missing here and make the same decisions as when they asked about every one (serially,
+// one ball walk each).
 std::vector<std::uint8_t> present_now(const RecoveryMesh& m, const std::vector<Target>& targets) {
     std::vector<std::uint8_t> out(targets.size(), 0);
     std::vector<index_t> first(targets.size());

@@ -63,7 +63,7 @@ FrontElements check_front(std::span<const index_t> front, index_t point_count) {
     for (std::size_t i = 0; i < half.size();) {
         std::size_t j = i;
         while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
-        // Built only for an error: one string per front edge was a serial 17 ms on the serpentine.
+        // Built only for an error: a string per front edge would be a serial cost on every run.
         const auto edge = [&] { return "edge " + std::to_string(half[i].lo) + "-" + std::to_string(half[i].hi); };
         if (j - i == 1)
             throw Error("tet front is not closed: " + edge() + " belongs only to " + tri_name(front, half[i].tri));

@@ -24,7 +24,7 @@ namespace tubemesh::tets {
 // Front edges are never removed; front faces are not removed while lock_faces is set (the
 // face-recovery phase: faces already present stay). Looked up by binary search in the sorted
 // lists check_front made: only missing elements ask (few on most fronts), and hash sets of
-// every edge and triangle took longer to build than all the lookups (serpentine lift: 0.08 s).
+// every edge and triangle took longer to build than all the lookups (bench/results/tuning-notes.md).
 class FrontLocks {
 public:
     explicit FrontLocks(const FrontElements& front) : front_(front) {}

@@ -5,7 +5,7 @@
 set(CPACK_PACKAGE_NAME tubemesh)
 set(CPACK_PACKAGE_CONTACT "tubemesh maintainers")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Conforming hybrid meshes (hex rings, pyramids, tets) for solids with tubular holes")
-set(CPACK_PACKAGE_DESCRIPTION
+string(CONCAT CPACK_PACKAGE_DESCRIPTION
     "Meshes CAD solids (STEP, IGES, BREP) with open-ended tubular holes for finite-element analysis:\n"
     "swept hexahedra around every hole, a layer of pyramids, tetrahedra elsewhere. Provides the\n"
     "tubemesh command, the tubemesh-mpi batch driver and the Python module tubemesh.")
@@ -17,9 +17,9 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 if(TARGET tubemesh_python)
   # The module is built for one Python minor version and returns numpy arrays.
-  math(EXPR next_minor "${Python_VERSION_MINOR} + 1")
-  set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}~), \
-python3 (<< ${Python_VERSION_MAJOR}.${next_minor}), python3-numpy")
+  math(EXPR next_minor "${TUBEMESH_PYTHON_MINOR} + 1")
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${TUBEMESH_PYTHON_MAJOR}.${TUBEMESH_PYTHON_MINOR}~), \
+python3 (<< ${TUBEMESH_PYTHON_MAJOR}.${next_minor}), python3-numpy")
 endif()
 if(TARGET tubemesh-mpi)
   set(CPACK_DEBIAN_PACKAGE_RECOMMENDS openmpi-bin)  # mpirun, to start tubemesh-mpi

@@ -15,8 +15,9 @@ debs=("$dir"/pkg/tubemesh_*.deb)
 deb=${debs[0]}
 
 depends=$(dpkg-deb -f "$deb" Depends)
-for p in libocct-data-exchange-7.6 libocct-foundation-7.6 libtbb12 libfmt9 libstdc++6 python3-numpy; do
-  grep -qE "(^|, )$p( |,|$)" <<<"$depends" || fail "Depends lacks $p: $depends"
+names=$(tr ',' '\n' <<<"$depends" | awk '{print $1}')
+for p in libocct-data-exchange-7.6 libocct-foundation-7.6 libtbb12 libfmt9 libstdc++6 python3 python3-numpy; do
+  grep -qxF "$p" <<<"$names" || fail "Depends lacks $p: $depends"
 done
 dpkg-deb --contents "$deb" >"$dir/contents.txt"
 grep -q " ./usr/bin/tubemesh$" "$dir/contents.txt" || fail "no /usr/bin/tubemesh in the package"

@@ -127,6 +127,7 @@ PYBIND11_MODULE(tubemesh, m) {
     using namespace tubemesh;
     namespace tp = tubemesh::python;
     m.doc() = "tubemesh: conforming hybrid meshes (hex rings, pyramids, tets) for solids with tubular holes";
+    m.attr("__version__") = TUBEMESH_VERSION;
     py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
     tp::bind_mesh_result(m);
 

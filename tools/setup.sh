@@ -12,6 +12,9 @@ packages=(
   pybind11-dev python3-dev libjs-three libjs-chart.js
   # batch: catalogue, hashes, the MPI driver (built only when MPI is found)
   libsqlite3-dev libssl-dev libopenmpi-dev openmpi-bin
+  # install: `pip install .` in a venv (offline with Debian's setuptools, wheel and numpy) and
+  # `cpack -G DEB` (dpkg-shlibdeps, file)
+  python3-venv python3-setuptools python3-wheel dpkg-dev file
   # tests
   libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
   python3 python3-gmsh python3-meshio python3-numpy python3-vtk9 calculix-ccx python3-pytest

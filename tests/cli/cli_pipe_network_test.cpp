@@ -8,12 +8,15 @@
 //    T_c - (T_c - T_in) exp(-h pi D L / (m c_p)) within 1 % of the rise; on the dam block the
 //    water carries away what crosses the wall faces and what leaves through the top; reversing
 //    the flow in a symmetric block mirrors the water temperatures;
-//  * the options: each error is exit 2 and no file.
+//  * the options: each error is exit 2 and no file;
+//  * the README's transient deck of two lifts as written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -155,6 +158,48 @@ TEST(PipeNetwork, OptionErrorsAreExit2AndNoFile) {
     const auto r = run_command(cli() + " mesh --quiet --pipe-network -o " + q(dir / "dam.msh"));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find(".inp"), std::string::npos) << r.err;
+}
+
+// The deck between the README's "pipe-cooling-deck" markers, as written, on the section its
+// commands make: the upper pipe's water leaves as it came until its lift is placed, then warms.
+TEST(PipeNetwork, TheReadmeTransientDeckRunsAsWritten) {
+    std::ifstream readme(std::string(TUBEMESH_SOURCE_DIR) + "/README.md");
+    const std::string s((std::istreambuf_iterator<char>(readme)), std::istreambuf_iterator<char>());
+    const std::string begin = "<!-- pipe-cooling-deck -->\n```\n", end = "```\n<!-- /pipe-cooling-deck -->";
+    const std::size_t from = s.find(begin), to = s.find(end);
+    ASSERT_NE(from, std::string::npos) << "README has no pipe-cooling-deck block";
+    ASSERT_NE(to, std::string::npos);
+    TempDir dir;
+    std::ofstream(dir / "lifts_heat.inp") << s.substr(from + begin.size(), to - from - begin.size());
+    const auto made = run_command(cli() +
+                                  " make-dam --columns 1 --lifts 2 --width 4 --depth 3 --lift-height 1 --spacing 1 "
+                                  "--diameter 0.05 --assembled --quiet -o " +
+                                  q(dir / "lifts"));
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+    const fs::path inp = mesh_network(dir, "--assembly " + q(dir / "lifts" / "section.step"), "section");
+    TempDir work;
+    const json r = network({"transient", (dir / "lifts_heat.inp").string(), inp.string(), work.path().string()});
+    ASSERT_TRUE(r.contains("times")) << r.dump();
+    const auto& times = r["times"];
+    const auto& lower = r["outlets"]["pipe_1"];
+    const auto& upper = r["outlets"]["pipe_2"];
+    ASSERT_EQ(lower.size(), times.size());
+    ASSERT_EQ(upper.size(), times.size());
+    std::cout << "README transient deck, outlet water temperature per day:\n";
+    double lower_peak = 0, upper_peak = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const double day = times[i].get<double>() / 86400;
+        std::cout << "  day " << day << ": pipe_1 " << lower[i] << ", pipe_2 " << upper[i] << "\n";
+        if (day <= 7) {
+            EXPECT_NEAR(upper[i].get<double>(), 10.0, 1e-6) << "day " << day;
+        }
+        lower_peak = std::max(lower_peak, lower[i].get<double>());
+        upper_peak = std::max(upper_peak, upper[i].get<double>());
+    }
+    EXPECT_NEAR(times.back().get<double>(), 14 * 86400.0, 1.0);
+    EXPECT_GT(lower_peak, 11.0);
+    EXPECT_GT(upper_peak, 11.0);
+    EXPECT_LT(std::max(lower_peak, upper_peak), 15.0);  // 1500 W/m3 fading over days, cooled from the start
 }
 
 #else

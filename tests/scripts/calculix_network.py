@@ -25,6 +25,10 @@ are written and as CalculiX (Debian's ccx) solves them; prints what it found as 
       the other: each water temperature node of one run against the node of the other at the
       mirrored place (about the middle of the pipe's axis, the x extent of its nodes).
       -> {"nodes", "matched", "max_difference", "rise", "error", "inlets" (x of each run's _water_in)}
+  calculix_network.py transient DECK.inp MESH.inp DIR
+      Runs DECK as written, MESH and its films file beside it under their own names, and reads
+      every "temperatures for set PIPE_<k>_WATER_OUT" block it printed.
+      -> {"times": [...], "outlets": {"pipe_1": [...], ...}} (one temperature per time)
 
 Water: c_p 4186 J/(kg K), concrete: conductivity 2.5 W/(m K). Exit status 1 with the reason on
 stderr when ccx fails.
@@ -297,9 +301,32 @@ def mirror(forward_path, reversed_path, directory, t_fixed, t_in, mass_flow):
             "error": worst / rise if rise else 0.0, "inlets": inlets}
 
 
+def transient(deck_path, mesh_path, directory):
+    for suffix in (".inp", ".films.inp"):
+        source = mesh_path[:-4] + suffix
+        shutil.copy(source, os.path.join(directory, os.path.basename(source)))
+    shutil.copy(deck_path, os.path.join(directory, "deck.inp"))
+    run_ccx(directory, "deck")
+    times, outlets, current = [], {}, None
+    with open(os.path.join(directory, "deck.dat")) as f:
+        for line in f:
+            m = re.match(r"\s*temperatures for set (PIPE_\d+)_WATER_OUT and time\s+(\S+)", line)
+            if m:
+                current = outlets.setdefault(m[1].lower(), [])
+                if not times or float(m[2]) > times[-1]:
+                    times.append(float(m[2]))
+                continue
+            parts = line.split()
+            if current is not None and len(parts) == 2 and parts[0].isdigit():
+                current.append(float(parts[1]))
+                current = None
+    return {"times": times, "outlets": outlets}
+
+
 def main():
     mode, args = sys.argv[1], sys.argv[2:]
-    result = {"structure": structure, "fixed": fixed, "balance": balance, "mirror": mirror}[mode](*args)
+    result = {"structure": structure, "fixed": fixed, "balance": balance, "mirror": mirror,
+              "transient": transient}[mode](*args)
     print(json.dumps(result))
 
 

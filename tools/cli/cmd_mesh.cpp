@@ -247,6 +247,7 @@ Command add_mesh_command(CLI::App& app) {
                     "With --pipe-network: the water of pipe_<k> enters at its second end (pipe_<k>_outlet); "
                     "repeatable")
         ->option_text("K")
+        ->allow_extra_args(false)  // one number per --reverse-flow: the next word may be IN
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->footer(
         "Progress: one updating line per phase on a terminal, plain 'progress:' lines otherwise.\n"

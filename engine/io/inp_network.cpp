@@ -50,16 +50,19 @@ public:
 
     void write() {
         const MeshDescription* d = options_.description;
-        if (!d || d->pipes.empty())
+        if (!d)
             throw Error("cannot write the pipe network to '" + inp_.target().string() +
-                        "': the mesh has no swept pipes (a mesh read from a file does not know its stations)");
+                        "': the mesh's pipe stations are not known (a mesh read from a file does not keep them)");
         for (int k : options_.pipe_network.reverse_flow)
             if (std::none_of(d->pipes.begin(), d->pipes.end(), [&](const PipeStations& p) { return is_pipe(p, k); }))
                 throw Error("--reverse-flow " + std::to_string(k) + ": the mesh has no pipe_" + std::to_string(k) +
-                            " (its pipes are pipe_1 to pipe_" + std::to_string(d->pipes.size()) + ")");
+                            (d->pipes.empty() ? std::string(" (it has no pipes)")
+                                              : " (its pipes are pipe_1 to pipe_" + std::to_string(d->pipes.size()) + ")"));
         films_.write("** tubemesh: forced convection from every pipe wall face to its water (network in " +
                      inp_.target().filename().string() + "),\n** one line per face: element, F<s>FC, water node, h. "
-                     "*INCLUDE it inside a heat-transfer *STEP.\n*FILM\n");
+                     "*INCLUDE it inside a heat-transfer *STEP.\n");
+        // A solid without pipes (a dam's foundation block) has no water: the file holds no *FILM.
+        films_.write(d->pipes.empty() ? "** the mesh has no pipes\n" : "*FILM\n");
         const std::uint64_t first_node = numbering_.nodes + 1, first_element = numbering_.elements + 1;
         for (const PipeStations& pipe : d->pipes) write_pipe(pipe);
         if (numbering_.nodes + 1 == first_node) return;

@@ -41,9 +41,9 @@ struct InpNumbering {
     double zero_below = 0;
 };
 
-// Writes the networks to `inp` (after the mesh part) and the films to `films`. Throws
-// tubemesh::Error when the description has no pipe stations, --reverse-flow names no pipe, or a
-// wall face lies between no two stations.
+// Writes the networks to `inp` (after the mesh part) and the films to `films` (comments alone
+// for a mesh without pipes). Throws tubemesh::Error when there is no description (a mesh read
+// from a file), --reverse-flow names no pipe, or a wall face lies between no two stations.
 void write_pipe_networks(const HybridMesh& mesh, const std::array<std::vector<CellFaceRef>, kFaceKindCount>& owners,
                          const WriteOptions& options, InpNumbering numbering, AtomicFile& inp, AtomicFile& films);
 

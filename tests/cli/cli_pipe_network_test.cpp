@@ -160,6 +160,20 @@ TEST(PipeNetwork, OptionErrorsAreExit2AndNoFile) {
     EXPECT_NE(r.err.find(".inp"), std::string::npos) << r.err;
 }
 
+// A solid without pipes (a dam's foundation block) has no water: no network, no *FILM.
+TEST(PipeNetwork, ASolidWithoutPipesHasNoWater) {
+    TempDir dir;
+    std::ofstream(dir / "plain.json") << R"({"name": "plain", "unit": "metre", "box": [1, 1, 1], "pipes": []})";
+    const fs::path step = dir / "plain.step";
+    ASSERT_EQ(run_command(cli() + " make-block --spec " + q(dir / "plain.json") + " -o " + q(step)).exit_code, 0);
+    const fs::path inp = mesh_network(dir, q(step), "plain");
+    std::ifstream in(inp), films(dir / "plain.films.inp");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string film_text((std::istreambuf_iterator<char>(films)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("TYPE=D"), std::string::npos);
+    EXPECT_EQ(film_text.find("*FILM"), std::string::npos);
+}
+
 // The deck between the README's "pipe-cooling-deck" markers, as written, on the section its
 // commands make: the upper pipe's water leaves as it came until its lift is placed, then warms.
 TEST(PipeNetwork, TheReadmeTransientDeckRunsAsWritten) {

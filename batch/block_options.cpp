@@ -8,6 +8,7 @@
 #include "batch/sha256.hpp"
 #include "engine/core/types.hpp"
 #include "tools/run/mesh_settings.hpp"
+#include "tools/run/outputs.hpp"
 
 namespace tubemesh::batch {
 
@@ -22,7 +23,7 @@ constexpr Key kNumbers[] = {{"size", false, true},          {"sweep_size", false
                             {"layers", true, false},        {"axial_aspect", false, false}, {"chordal", false, false},
                             {"pyramid_height", false, false}, {"gradation", false, false}, {"tet_parts", true, false},
                             {"tet_relax", true, false},     {"max_elements", false, true}, {"solid", true, true},
-                            {"time_limit", false, false}};
+                            {"time_limit", false, false}, {"film_coefficient", false, false}};
 
 void check_formats(const nlohmann::json& v, const std::string& where) {
     if (!v.is_array() || v.empty()) throw Error(where + ": \"formats\" must be a non-empty list such as [\"msh\"]");
@@ -35,7 +36,14 @@ void check_formats(const nlohmann::json& v, const std::string& where) {
 // Types here; ranges by run::mesh_options once the block's options are complete.
 void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
     if (key == "formats") return check_formats(v, where);
-    if (key == "move_apexes" || key == "slide_surface") {
+    if (key == "reverse_flow") {
+        if (!v.is_array()) throw Error(fmt::format("{}: \"reverse_flow\" must be a list of pipe numbers, got {}", where, v.dump()));
+        for (const nlohmann::json& k : v)
+            if (!k.is_number_integer())
+                throw Error(fmt::format("{}: \"reverse_flow\" takes whole pipe numbers, got {}", where, k.dump()));
+        return;
+    }
+    if (key == "move_apexes" || key == "slide_surface" || key == "pipe_network") {
         if (!v.is_boolean()) throw Error(fmt::format("{}: \"{}\" must be true or false, got {}", where, key, v.dump()));
         return;
     }
@@ -100,6 +108,9 @@ nlohmann::json default_block_options() {
             {"max_elements", nullptr},
             {"solid", nullptr},
             {"formats", {"msh"}},
+            {"pipe_network", false},
+            {"film_coefficient", PipeNetworkOptions{}.film_coefficient},
+            {"reverse_flow", nlohmann::json::array()},
             {"time_limit", 3600.0}};
 }
 
@@ -114,6 +125,7 @@ nlohmann::json merge_block_options(const nlohmann::json& base, const nlohmann::j
     }
     try {
         run::mesh_options(settings_of(out), run::Naming::Keywords);
+        pipe_network_of(out);
     } catch (const Error& e) {
         throw Error(where + ": " + e.what());
     }
@@ -134,6 +146,16 @@ MeshOptions mesh_options(const nlohmann::json& o, int threads) {
     run::MeshSettings s = settings_of(o);
     s.threads = threads;
     return run::mesh_options(s, run::Naming::Keywords);
+}
+
+PipeNetworkOptions pipe_network_of(const nlohmann::json& o) {
+    std::vector<std::string> outputs;
+    for (const nlohmann::json& f : o.at("formats"))
+        if (f == "inp") outputs.push_back("block.inp");
+    const double h = o.at("film_coefficient").get<double>();
+    return run::pipe_network_options(o.at("pipe_network").get<bool>(),
+                                     h == PipeNetworkOptions{}.film_coefficient ? std::nullopt : std::optional(h),
+                                     o.at("reverse_flow").get<std::vector<int>>(), outputs, run::Naming::Keywords);
 }
 
 int solid_of(const nlohmann::json& o) { return o.at("solid").is_null() ? 0 : o.at("solid").get<int>(); }

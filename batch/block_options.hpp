@@ -4,7 +4,9 @@
 //   size S, sweep_size St, circ n, layers L, axial_aspect, chordal, pyramid_height, gradation,
 //   tet_parts, tet_relax, move_apexes and slide_surface (true or false), max_elements, solid K
 //   (null: automatic, as when left out),
-//   formats ["msh", "vtu", "inp", "html" (the block's HTML report)], time_limit (seconds per block; 0: none)
+//   formats ["msh", "vtu", "inp", "html" (the block's HTML report)], time_limit (seconds per block; 0: none),
+//   pipe_network (true or false), film_coefficient, reverse_flow [pipe numbers] (the .inp's water
+//   networks, as `tubemesh mesh --pipe-network`)
 //
 // The meshing options are run::MeshSettings (tools/run/mesh_settings.hpp) under the Python
 // module's keywords: the same meaning, defaults and ranges as `tubemesh mesh`'s flags.
@@ -13,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "engine/io/mesh_io.hpp"
 #include "engine/pipeline/pipeline.hpp"
 
 namespace tubemesh::batch {
@@ -31,6 +34,9 @@ std::string options_hash(const nlohmann::json& options);
 
 // The engine's options for resolved block options, on `threads` threads.
 MeshOptions mesh_options(const nlohmann::json& options, int threads);
+
+// The water networks for the block's .inp (engine/io/inp_network.hpp).
+PipeNetworkOptions pipe_network_of(const nlohmann::json& options);
 
 // Which solid of the block's file, 1-based; 0: the file holds one.
 int solid_of(const nlohmann::json& options);

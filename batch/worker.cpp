@@ -98,6 +98,7 @@ nlohmann::json mesh(const nlohmann::json& r) {
     for (const std::string& html : html_outputs) texts.emplace_back(html, run::html_report(meshed));
     WriteOptions write;
     write.description = &meshed.result.description;  // unit, group kinds and rims in the files
+    write.pipe_network = pipe_network_of(o);
     run::write_all(meshed.result.mesh, mesh_outputs, write, texts);
     worker_fault_point("written", id, attempt);
 

@@ -3,6 +3,8 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <optional>
+#include <vector>
 
 #include "engine/io/mesh_io.hpp"
 #include "tools/run/html_report.hpp"
@@ -108,11 +110,15 @@ py::object groups(const py::object& self) {
 }
 
 void write(const py::object& self, const py::object& path, bool msh_ascii, const std::string& inp_family,
-           const std::string& inp_pyramid) {
+           const std::string& inp_pyramid, bool pipe_network, std::optional<double> film_coefficient,
+           const std::vector<int>& reverse_flow) {
     const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
     const MeshResult& r = result_of(self);
     run::check_mesh_output(p, r.run.result.reached);
     WriteOptions options = run::write_options(msh_ascii, inp_family, inp_pyramid, run::Naming::Keywords);
+    std::vector<std::string> files{p};
+    options.pipe_network =
+        run::pipe_network_options(pipe_network, film_coefficient, reverse_flow, files, run::Naming::Keywords);
     options.description = &r.run.result.description;
     py::gil_scoped_release release;
     write_mesh(r.run.result.mesh, p, options);
@@ -168,9 +174,13 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
                                "The run's report as a dict: what `tubemesh mesh --report` writes as JSON")
         .def("write", &write, py::arg("path"), py::kw_only(), py::arg("msh_ascii") = false,
              py::arg("inp_family") = run::kInpFamilies[0], py::arg("inp_pyramid") = run::kInpPyramids[0],
+             py::arg("pipe_network") = false, py::arg("film_coefficient") = py::none(),
+             py::arg("reverse_flow") = std::vector<int>{},
              "Writes the mesh; the format by extension: .msh (Gmsh 4.1, binary unless msh_ascii), .vtu, .vtm, .inp "
-             "(inp_family 'stress', 'heat' or 'coupled'; inp_pyramid 'hex' or 'c3d5'), as `tubemesh mesh -o` "
-             "does. Written to a temporary name and renamed.")
+             "(inp_family 'stress', 'heat' or 'coupled'; inp_pyramid 'hex' or 'c3d5'; pipe_network: the water of "
+             "every pipe as a CalculiX network, with film_coefficient (default 2000) and the pipes of reverse_flow "
+             "entering at their second end, films in X.films.inp), as `tubemesh mesh -o` does. Written to a "
+             "temporary name and renamed.")
         .def(
             "write_report", [](py::object self, py::object path) {
                 write_text(self, path, ".json", "the report", report_text);

@@ -12,6 +12,8 @@
 //   *NSET per named node set  each pipe's inlet and outlet rim (MeshDescription)
 //   *NSET SHARED_A_B          the nodes groups A and B share: a fixed value on both A and B
 //                             is given twice there
+//   with pipe_network.write   the water networks after all that, and their films beside the
+//                             file (inp_network.hpp)
 // Node orders of C3D4, C3D5 and C3D8 are the VTK ones, so nothing is permuted; a pyramid as a
 // collapsed C3D8 repeats its apex four times. Sets without members are left out: Abaqus
 // rejects empty surfaces.
@@ -28,6 +30,7 @@
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/boundary_cell_faces.hpp"
 #include "engine/io/group_order.hpp"
+#include "engine/io/inp_network.hpp"
 #include "engine/io/layout_check.hpp"
 #include "engine/io/mesh_io.hpp"
 #include "engine/io/mesh_notes.hpp"
@@ -115,6 +118,11 @@ public:
         for (std::size_t g = 0; g < mesh_.surface_group_names.size(); ++g) group_sets(g);
         named_node_sets();
         shared_node_sets();
+    }
+
+    // What the mesh part used, for what follows it (the water networks).
+    InpNumbering numbering() {
+        return {mesh_.point_count(), mesh_.cell_count(), element_sets_, node_sets_, zero_below_};
     }
 
 private:
@@ -375,7 +383,13 @@ void write_inp(const HybridMesh& mesh, const std::filesystem::path& path, const 
     const io::FaceOwners owners = io::boundary_cell_faces(mesh);
     io::check_owners(mesh, owners, path);
     io::AtomicFile out(path);
-    io::InpWriter(mesh, owners, options, out).write();
+    io::InpWriter writer(mesh, owners, options, out);
+    writer.write();
+    if (options.pipe_network.write) {
+        io::AtomicFile films(io::films_path(path));
+        io::write_pipe_networks(mesh, owners, options, writer.numbering(), out, films);
+        films.commit();
+    }
     out.commit();
 }
 

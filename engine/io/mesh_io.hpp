@@ -4,6 +4,7 @@
 // rename it, so a failure never leaves a partial mesh behind. Readers throw tubemesh::Error
 // naming the line or byte offset.
 #include <filesystem>
+#include <vector>
 
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/mesh_description.hpp"
@@ -21,6 +22,16 @@ enum class InpFamily { Stress, HeatTransfer, Coupled };
 // read; or the 5-node C3D5 (stress family only), for solvers that have it.
 enum class InpPyramid { CollapsedHex, C3D5 };
 
+// The water in every pipe as a CalculiX fluid network in the .inp, its *FILM lines in a file
+// beside it (engine/io/inp_network.hpp). Needs MeshDescription::pipes.
+struct PipeNetworkOptions {
+    bool write = false;
+    // h of every wall face's forced convection, in the deck's units: 2000 W/(m2 K) is water at
+    // about 0.5 m/s in a 25 mm pipe (Dittus-Boelter); a plastic pipe's wall lowers it.
+    double film_coefficient = 2000;
+    std::vector<int> reverse_flow;  // pipe numbers k (pipe_<k>) whose water enters at the second end
+};
+
 struct WriteOptions {
     MshEncoding msh_encoding = MshEncoding::Binary;
     InpFamily inp_family = InpFamily::Stress;
@@ -28,6 +39,7 @@ struct WriteOptions {
     // The length unit, the surface groups' CAD kinds and aliases, named node sets (rims), for
     // the files' comment blocks and extra sets. Null: the mesh alone.
     const MeshDescription* description = nullptr;
+    PipeNetworkOptions pipe_network;
 };
 
 void write_msh(const HybridMesh& mesh, const std::filesystem::path& path, MshEncoding encoding = MshEncoding::Binary,

@@ -239,6 +239,8 @@ void drop_unused_points(HybridMesh& mesh, MeshDescription& description) {
             if (to[v] != kNoIndex) kept.push_back(to[v]);
         set.nodes = std::move(kept);
     }
+    for (PipeStations& pipe : description.pipes)
+        for (index_t& v : pipe.wall_nodes) v = to[v];
 }
 
 // Surface groups left without faces (the shared faces') go; the others keep their order.

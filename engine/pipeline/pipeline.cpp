@@ -9,6 +9,7 @@
 
 #include "engine/core/timing.hpp"
 #include "engine/surface/face_boundaries.hpp"
+#include "engine/pipeline/pipe_stations.hpp"
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
@@ -77,6 +78,7 @@ void run_sweep(const PipelineInput& in, const MeshOptions& opt, PipelineResult& 
                                                   : join_ring_ends(out.mesh, out.sweep, in.ring_joins,
                                                                    kRingJoinShare * sweep.sweep_size);
     add_rims(out.sweep, in.ring_joins, out.mesh, out.description);
+    add_pipe_stations(out.sweep, in.ring_joins, out.mesh, out.description);
     const SweepStats& s = out.sweep.stats;
     PhaseReport r{"sweep", seconds_since(t0), {}};
     r.counts = {{"tubes", double(s.tubes)},

@@ -187,7 +187,8 @@ struct PhaseReport {
 struct PipelineResult {
     HybridMesh mesh;
     // For the files and the report: after Sweep each pipe's rims, node sets "pipe_<k>_inlet"
-    // (the wall nodes of the tube's first end, host1) and "pipe_<k>_outlet"; geom adds the
+    // (the wall nodes of the tube's first end, host1) and "pipe_<k>_outlet", and its stations
+    // (MeshDescription::pipes, for the water network); geom adds the
     // length unit and the surface groups' CAD kinds and aliases.
     MeshDescription description;
     std::vector<PhaseReport> phases;  // one per phase run, in order

@@ -83,6 +83,8 @@ std::size_t describe(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::
         ring.axial_step = p.line.length / steps;
         ring.twist = p.twist;
         ring.frame_fallback = p.line.frame_fallback;
+        ring.centres.clear();
+        for (const Station& s : p.line.stations) ring.centres.push_back(s.centre);
         ring.first_node = static_cast<index_t>(node);
         ring.first_hex = static_cast<index_t>(hex);
         ring.hex_count = steps * layers * n;

@@ -158,6 +158,7 @@ struct TubeRing {
     index_t wall_group = kNoIndex;                  // surface group "pipe_<tube + 1>" (joined: its pipe's)
     std::array<index_t, 2> host_group{kNoIndex, kNoIndex};  // "face_<host1>", "face_<host2>"
     std::array<RingEnd, 2> ends;
+    std::vector<Vec3> centres;  // the centre-line point of each station
 
     double min_scaled_jacobian = 0, mean_scaled_jacobian = 0, max_condition = 0;
 

@@ -2,7 +2,8 @@
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
 // [--tet-relax R] [--move-apexes] [--fixed-surface] [--max-elements N] [--report FILE.json] [--html FILE.html]
 // [--quiet] [--solid K | --assembly [--glue-tolerance D]] [--until STAGE] [--msh-ascii]
-// [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]`: mesh a
+// [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]
+// [--pipe-network [--film-coefficient H] [--reverse-flow K ...]]`: mesh a
 // CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
 // show progress, print the phases, Table 1 and where each surface group is, and write the mesh
 // to every OUT (format by extension: .msh, .vtu, .vtm, .inp), the report as JSON and as an HTML
@@ -59,9 +60,12 @@ struct MeshArgs {
     double glue_tolerance = 0;
     std::string inp_family = run::kInpFamilies[0];
     std::string inp_pyramid = run::kInpPyramids[0];
+    bool pipe_network = false;
+    double film_coefficient = 0;
+    std::vector<int> reverse_flow;
     CLI::Option *size_option = nullptr, *sweep_option = nullptr, *circ_option = nullptr, *threads_option = nullptr,
                 *max_elements_option = nullptr, *solid_option = nullptr, *layers_option = nullptr,
-                *axial_option = nullptr, *chordal_option = nullptr;
+                *axial_option = nullptr, *chordal_option = nullptr, *film_option = nullptr;
 };
 
 template <class T>
@@ -231,6 +235,20 @@ Command add_mesh_command(CLI::App& app) {
                     "Pyramids in .inp files: hex (a C3D8 with the apex repeated, which CalculiX and Abaqus read; "
                     "default) or c3d5 (the 5-node pyramid, stress family only)")
         ->check(CLI::IsMember(run::kInpPyramids));
+    cmd->add_flag("--pipe-network", args->pipe_network,
+                  "Write the water in every pipe into the .inp as a CalculiX fluid network (sets pipe_<k>_water, "
+                  "_water_in, _water_out, _water_flow, WATER) and X.films.inp beside X.inp: one *FILM line per wall "
+                  "face, forced convection to its water node");
+    args->film_option = cmd->add_option("--film-coefficient", args->film_coefficient,
+                                        "With --pipe-network: h of the wall faces' films, in the deck's units "
+                                        "(default 2000, W/(m2 K) for water in a 25 mm pipe at about 0.5 m/s)")
+                            ->option_text("H");
+    cmd->add_option("--reverse-flow", args->reverse_flow,
+                    "With --pipe-network: the water of pipe_<k> enters at its second end (pipe_<k>_outlet); "
+                    "repeatable")
+        ->option_text("K")
+        ->allow_extra_args(false)  // one number per --reverse-flow: the next word may be IN
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->footer(
         "Progress: one updating line per phase on a terminal, plain 'progress:' lines otherwise.\n"
         "Partial stages (--until) are checked for what they hold (engine/pipeline/stage_check.hpp); .inp needs "
@@ -249,8 +267,13 @@ Command add_mesh_command(CLI::App& app) {
             args->outputs = {"dam_block.msh", "dam_block.vtu"};
         }
         check_outputs(*args, until);
-        const WriteOptions write =
-            run::write_options(args->msh_ascii, args->inp_family, args->inp_pyramid, run::Naming::Flags);
+        WriteOptions write = run::write_options(args->msh_ascii, args->inp_family, args->inp_pyramid, run::Naming::Flags);
+        std::vector<std::string> files = args->outputs;
+        std::optional<double> film;
+        take_if_given(film, args->film_option, args->film_coefficient);
+        write.pipe_network =
+            run::pipe_network_options(args->pipe_network, film, args->reverse_flow, files, run::Naming::Flags);
+        if (write.pipe_network.write) run::check_distinct_outputs(files);
         ProgressLine progress(ProgressLine::mode_for(args->quiet));
         MeshOptions options = mesh_options(*args, progress);
         auto say = [&](const std::string& s) {

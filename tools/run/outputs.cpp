@@ -3,9 +3,13 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
+#include <fmt/format.h>
+
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/inp_network.hpp"
 
 namespace tubemesh::run {
 
@@ -100,6 +104,34 @@ WriteOptions write_options(bool msh_ascii, const std::string& inp_family, const 
     if (o.inp_pyramid == InpPyramid::C3D5 && o.inp_family != InpFamily::Stress)
         throw Error(pyramid + " c3d5 has no heat-transfer or coupled variant: use " + pyramid + " hex with " + family +
                     " " + inp_family);
+    return o;
+}
+
+PipeNetworkOptions pipe_network_options(bool write, std::optional<double> film_coefficient,
+                                        const std::vector<int>& reverse_flow, std::vector<std::string>& outputs,
+                                        Naming naming) {
+    const std::string network = option_name("pipe_network", naming), film = option_name("film_coefficient", naming),
+                      reverse = option_name("reverse_flow", naming);
+    PipeNetworkOptions o;
+    if (!write) {
+        if (film_coefficient) throw Error(film + " is for the water network: add " + network);
+        if (!reverse_flow.empty()) throw Error(reverse + " is for the water network: add " + network);
+        return o;
+    }
+    o.write = true;
+    if (film_coefficient) {
+        if (!std::isfinite(*film_coefficient) || *film_coefficient <= 0)
+            throw Error(fmt::format("{} must be a positive number, got {}", film, *film_coefficient));
+        o.film_coefficient = *film_coefficient;
+    }
+    for (int k : reverse_flow)
+        if (k < 1) throw Error(reverse + " " + std::to_string(k) + ": pipes are numbered from 1 (pipe_1)");
+    o.reverse_flow = reverse_flow;
+    std::vector<std::string> films;
+    for (const std::string& out : outputs)
+        if (lower_extension(out) == ".inp") films.push_back(io::films_path(out).string());
+    if (films.empty()) throw Error(network + " writes the water into a .inp: give an output ending in .inp");
+    outputs.insert(outputs.end(), films.begin(), films.end());
     return o;
 }
 

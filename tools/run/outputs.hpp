@@ -1,6 +1,7 @@
 #pragma once
 // Where a run's files go: checks made before any work (so a bad path fails in a second, not
 // after the mesh) and the atomic write of a text file. Shared by `tubemesh mesh` and Python.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,15 @@ inline const std::vector<std::string> kInpPyramids = {"hex", "c3d5"};
 // names above. Throws tubemesh::Error for an unknown name or c3d5 outside the stress family.
 WriteOptions write_options(bool msh_ascii, const std::string& inp_family, const std::string& inp_pyramid,
                            Naming naming);
+
+// The water networks of a run's .inp files (engine/io/inp_network.hpp): the options checked,
+// the films files ("x.films.inp") added to `outputs` for the distinctness check. Throws
+// tubemesh::Error, naming the option, for a non-positive or non-finite coefficient, a pipe
+// number below 1, a film coefficient or reversed flow without the network, or the network
+// without a .inp among `outputs`.
+PipeNetworkOptions pipe_network_options(bool write, std::optional<double> film_coefficient,
+                                        const std::vector<int>& reverse_flow, std::vector<std::string>& outputs,
+                                        Naming naming);
 
 // A mesh file of a format tubemesh writes (.msh, .vtu, .vtm, .inp) that can hold a mesh of this
 // stage (.inp needs every boundary face on a cell), at a writable place.

@@ -169,7 +169,8 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
         .def("write", &write, py::arg("path"), py::kw_only(), py::arg("msh_ascii") = false,
              py::arg("inp_family") = run::kInpFamilies[0], py::arg("inp_pyramid") = run::kInpPyramids[0],
              "Writes the mesh; the format by extension: .msh (Gmsh 4.1, binary unless msh_ascii), .vtu, .vtm, .inp "
-             "(inp_family 'stress', 'heat' or 'coupled'; inp_pyramid 'hex' or 'c3d5'), as `tubemesh mesh -o` "
+             "(inp_family 'stress', 'heat', 'coupled' (CalculiX: C3D4/C3D8) or 'coupled-abaqus' (C3D4T/C3D8T, "
+             "Abaqus only); inp_pyramid 'hex' or 'c3d5' (Abaqus only)), as `tubemesh mesh -o` "
              "does. Written to a temporary name and renamed.")
         .def(
             "write_report", [](py::object self, py::object path) {

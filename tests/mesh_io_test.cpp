@@ -551,9 +551,18 @@ TEST(InpWriter, FamiliesAndTheFiveNodePyramid) {
     const std::string heat = testing::read_text(dir / "h.inp");
     EXPECT_TRUE(contains(heat, "*ELEMENT, TYPE=DC3D4, ELSET=KIND_TET\n")) << heat;
     EXPECT_TRUE(contains(heat, "*ELEMENT, TYPE=DC3D8, ELSET=KIND_PYRAMID\n")) << heat;
+    // CalculiX's coupled step takes the ordinary bricks and tets; the T elements are Abaqus's.
     o.inp_family = InpFamily::Coupled;
     write_inp(patch, dir / "c.inp", o);
-    EXPECT_TRUE(contains(testing::read_text(dir / "c.inp"), "*ELEMENT, TYPE=C3D8T, ELSET=KIND_HEX\n"));
+    const std::string coupled = testing::read_text(dir / "c.inp");
+    EXPECT_TRUE(contains(coupled, "*ELEMENT, TYPE=C3D8, ELSET=KIND_HEX\n")) << coupled;
+    EXPECT_TRUE(contains(coupled, "*ELEMENT, TYPE=C3D4, ELSET=KIND_TET\n")) << coupled;
+    EXPECT_FALSE(contains(coupled, "TYPE=C3D8T")) << coupled;
+    o.inp_family = InpFamily::CoupledAbaqus;
+    write_inp(patch, dir / "a.inp", o);
+    const std::string abaqus = testing::read_text(dir / "a.inp");
+    EXPECT_TRUE(contains(abaqus, "*ELEMENT, TYPE=C3D8T, ELSET=KIND_HEX\n")) << abaqus;
+    EXPECT_TRUE(contains(abaqus, "CalculiX refuses them")) << abaqus;
     o.inp_family = InpFamily::Stress;
     o.inp_pyramid = InpPyramid::C3D5;
     write_inp(patch, dir / "p.inp", o);

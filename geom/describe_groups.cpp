@@ -1,16 +1,11 @@
 #include "geom/describe_groups.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
-#include <TopAbs_Orientation.hxx>
-#include <gp_Pln.hxx>
 
-#include <algorithm>
-#include <cmath>
 #include <optional>
 #include <string>
 
+#include "geom/face_names.hpp"
 #include "geom/model_occt.hpp"
 
 namespace tubemesh::geom {
@@ -31,29 +26,6 @@ const char* surface_kind(GeomAbs_SurfaceType type) {
         case GeomAbs_OffsetSurface: return "offset surface";
         default: return "other";
     }
-}
-
-// A flat face whose outward normal is an axis and which lies on the bounding box's side.
-std::string box_side(const BoundingBox& box, const TopoDS_Face& face, const BRepAdaptor_Surface& surface) {
-    if (surface.GetType() != GeomAbs_Plane) return "";
-    gp_Dir n = surface.Plane().Axis().Direction();
-    if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
-    GProp_GProps props;
-    BRepGProp::SurfaceProperties(face, props);
-    const gp_Pnt c = props.CentreOfMass();
-    const double size = std::max({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z});
-    const double tolerance = 1e-6 * size;
-    struct Side {
-        double nx, ny, nz, at, coordinate;
-        const char* name;
-    };
-    const Side sides[] = {{0, 0, 1, box.max.z, c.Z(), "top"},       {0, 0, -1, box.min.z, c.Z(), "bottom"},
-                          {0, -1, 0, box.min.y, c.Y(), "upstream"}, {0, 1, 0, box.max.y, c.Y(), "downstream"},
-                          {-1, 0, 0, box.min.x, c.X(), "left"},     {1, 0, 0, box.max.x, c.X(), "right"}};
-    for (const Side& s : sides)
-        if (n.X() * s.nx + n.Y() * s.ny + n.Z() * s.nz > 1 - 1e-9 && std::abs(s.coordinate - s.at) <= tolerance)
-            return s.name;
-    return "";
 }
 
 // The face id behind a group name: "face_<id>" is the face, "pipe_<k>" the k-th tube's first
@@ -79,10 +51,7 @@ std::optional<int> group_face(const std::string& name, const TubeSearch& tubes) 
 void describe_groups(const Model& model, const TubeSearch& tubes, const HybridMesh& mesh,
                      MeshDescription& description) {
     description.length_unit = model.report().length_unit;
-    const bool built = model.report().format == "built";
-    // The box names the sides of built blocks only; an optimal box of a large imported solid
-    // costs more than the tet step's boundary recovery.
-    const BoundingBox box = built ? model.bounds() : BoundingBox{};
+    const std::vector<std::string> names = face_names(model);
     description.surface_groups.assign(mesh.surface_group_names.size(), {});
     for (std::size_t g = 0; g < mesh.surface_group_names.size(); ++g) {
         const std::optional<int> id = group_face(mesh.surface_group_names[g], tubes);
@@ -91,7 +60,7 @@ void describe_groups(const Model& model, const TubeSearch& tubes, const HybridMe
         const BRepAdaptor_Surface surface(face, /*restriction=*/false);
         SurfaceGroupInfo& info = description.surface_groups[g];
         info.surface_kind = surface_kind(surface.GetType());
-        if (built && mesh.surface_group_names[g].rfind("face_", 0) == 0) info.alias = box_side(box, face, surface);
+        if (mesh.surface_group_names[g].rfind("face_", 0) == 0) info.alias = names[static_cast<std::size_t>(*id - 1)];
     }
 }
 

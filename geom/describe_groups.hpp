@@ -1,7 +1,7 @@
 #pragma once
 // The model's side of MeshDescription: the length unit, each surface group's B-rep surface
-// kind, and on built blocks an alias that says where a flat face is (top, bottom, upstream,
-// downstream, left, right: +z, -z, -y, +y, -x, +x).
+// kind, and an alias that says where a face is: its name in the file, or on a built block its
+// side (geom/face_names.hpp).
 //
 // No OpenCASCADE header here.
 #include "engine/mesh/hybrid_mesh.hpp"

@@ -24,6 +24,9 @@ struct ImportReport {
     int solid_index = 1;      // which one (1-based) this Model is
     std::vector<std::string> healing;  // what ShapeFix changed, one line each; empty when nothing
     std::vector<std::string> notes;    // other things worth telling the user (units kept, shells closed, ...)
+    // Per face id (index id - 1), the name the file gives the face (STEP: its ADVANCED_FACE's,
+    // as write_step writes a built block's "top", ...); empty, or shorter, where it gives none.
+    std::vector<std::string> face_names;
 };
 
 struct BoundingBox {

@@ -177,10 +177,11 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
              py::arg("pipe_network") = false, py::arg("film_coefficient") = py::none(),
              py::arg("reverse_flow") = std::vector<int>{},
              "Writes the mesh; the format by extension: .msh (Gmsh 4.1, binary unless msh_ascii), .vtu, .vtm, .inp "
-             "(inp_family 'stress', 'heat' or 'coupled'; inp_pyramid 'hex' or 'c3d5'; pipe_network: the water of "
-             "every pipe as a CalculiX network, with film_coefficient (default 2000) and the pipes of reverse_flow "
-             "entering at their second end, films in X.films.inp), as `tubemesh mesh -o` does. Written to a "
-             "temporary name and renamed.")
+             "(inp_family 'stress', 'heat', 'coupled' (CalculiX: C3D4/C3D8) or 'coupled-abaqus' (C3D4T/C3D8T, "
+             "Abaqus only); inp_pyramid 'hex' or 'c3d5' (Abaqus only); pipe_network: the water of every pipe as a "
+             "CalculiX network, with film_coefficient (default 2000) and the pipes of reverse_flow entering at "
+             "their second end, films in X.films.inp), as `tubemesh mesh -o` does. Written to a temporary name "
+             "and renamed.")
         .def(
             "write_report", [](py::object self, py::object path) {
                 write_text(self, path, ".json", "the report", report_text);

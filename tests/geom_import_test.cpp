@@ -17,14 +17,17 @@
 #include <GProp_GProps.hxx>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "engine/core/types.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
+#include "geom/face_names.hpp"
 #include "geom/face_properties.hpp"
 #include "geom/import/import.hpp"
 #include "geom/model_occt.hpp"
@@ -209,6 +212,19 @@ void expect_round_trip(const std::string& preset, const std::string& unit) {
     EXPECT_LT(rel(m.volume(), built.info.volume), 1e-6);
     const BoundingBox a = built.model.bounds(), b = m.bounds();
     EXPECT_NEAR(b.max.x - b.min.x, a.max.x - a.min.x, 1e-6 * (a.max.x - a.min.x));
+    // The built block's face names come back from the file, each on the face it names.
+    std::vector<std::string> written = face_names(built.model), read = m.report().face_names;
+    const std::vector<std::string> sides = box_sides(m);
+    ASSERT_EQ(read.size(), sides.size());
+    for (std::size_t i = 0; i < read.size(); ++i) {
+        if (!read[i].empty()) {
+            EXPECT_EQ(read[i], sides[i]) << "face_" << i + 1;
+        }
+    }
+    std::sort(written.begin(), written.end());
+    std::sort(read.begin(), read.end());
+    EXPECT_EQ(read, written);
+    EXPECT_GE(std::count_if(read.begin(), read.end(), [](const std::string& n) { return !n.empty(); }), 2);
 }
 
 // Import's positive-volume check integrates the volume once; the element budget's rough
@@ -295,6 +311,8 @@ TEST(GeomImport, FacesAndEdgesAreNumberedFromOne) {
     EXPECT_EQ(face_id(m, face_of(m, 3)), 3);
     EXPECT_EQ(face_id(m, box(0, 1)), 0);
     EXPECT_TRUE(m.report().healing.empty()) << m.report().healing.front();
+    // A file that names no face: no face names, and an imported box gets no box sides.
+    for (const std::string& name : face_names(m)) EXPECT_EQ(name, "");
 }
 
 }  // namespace

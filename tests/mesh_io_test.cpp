@@ -542,6 +542,29 @@ TEST(InpWriter, SetsAndSurfacesOfThePatch) {
     EXPECT_TRUE(contains(text, "** length unit: not known")) << text;
 }
 
+// A surface between two regions (an assembly's joint) seen from either side: each region's
+// surface names that region's element, whichever cell the group's own sets took.
+TEST(InpWriter, RegionSurfacesTakeTheirRegionsElements) {
+    TempDir dir;
+    HybridMesh patch = testing::conforming_patch();
+    const std::array<index_t, 4> joint{4, 5, 6, 7};  // the hex's top, the pyramid's base
+    patch.add_face(FaceKind::Quad, joint, patch.surface_group_id("joint"));
+    const index_t joint_group = patch.surface_group_id("joint");
+    MeshDescription description;
+    description.region_surfaces = {{"hex_top", patch.region_id("hex_ring"), {joint_group}},
+                                   {"pyramid_base", patch.region_id("pyramids"), {joint_group}}};
+    WriteOptions o;
+    o.description = &description;
+    write_inp(patch, dir / "r.inp", o);
+    const std::string text = testing::read_text(dir / "r.inp");
+    // Labels: tets 1-10, the pyramid 11, the hex 12; the brick's top is S2, the pyramid's base S1.
+    EXPECT_TRUE(contains(text, "*ELSET, ELSET=hex_top_S2\n12\n")) << text;
+    EXPECT_TRUE(contains(text, "*SURFACE, NAME=hex_top, TYPE=ELEMENT\nhex_top_S2, S2\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELSET, ELSET=pyramid_base_S1\n11\n")) << text;
+    EXPECT_TRUE(contains(text, "*NSET, NSET=hex_top\n5, 6, 7, 8\n")) << text;
+    EXPECT_TRUE(contains(text, "*ELSET, ELSET=joint_S1\n11\n")) << text;  // the first cell that has it
+}
+
 TEST(InpWriter, FamiliesAndTheFiveNodePyramid) {
     TempDir dir;
     const HybridMesh patch = testing::conforming_patch();
@@ -551,9 +574,18 @@ TEST(InpWriter, FamiliesAndTheFiveNodePyramid) {
     const std::string heat = testing::read_text(dir / "h.inp");
     EXPECT_TRUE(contains(heat, "*ELEMENT, TYPE=DC3D4, ELSET=KIND_TET\n")) << heat;
     EXPECT_TRUE(contains(heat, "*ELEMENT, TYPE=DC3D8, ELSET=KIND_PYRAMID\n")) << heat;
+    // CalculiX's coupled step takes the ordinary bricks and tets; the T elements are Abaqus's.
     o.inp_family = InpFamily::Coupled;
     write_inp(patch, dir / "c.inp", o);
-    EXPECT_TRUE(contains(testing::read_text(dir / "c.inp"), "*ELEMENT, TYPE=C3D8T, ELSET=KIND_HEX\n"));
+    const std::string coupled = testing::read_text(dir / "c.inp");
+    EXPECT_TRUE(contains(coupled, "*ELEMENT, TYPE=C3D8, ELSET=KIND_HEX\n")) << coupled;
+    EXPECT_TRUE(contains(coupled, "*ELEMENT, TYPE=C3D4, ELSET=KIND_TET\n")) << coupled;
+    EXPECT_FALSE(contains(coupled, "TYPE=C3D8T")) << coupled;
+    o.inp_family = InpFamily::CoupledAbaqus;
+    write_inp(patch, dir / "a.inp", o);
+    const std::string abaqus = testing::read_text(dir / "a.inp");
+    EXPECT_TRUE(contains(abaqus, "*ELEMENT, TYPE=C3D8T, ELSET=KIND_HEX\n")) << abaqus;
+    EXPECT_TRUE(contains(abaqus, "CalculiX refuses them")) << abaqus;
     o.inp_family = InpFamily::Stress;
     o.inp_pyramid = InpPyramid::C3D5;
     write_inp(patch, dir / "p.inp", o);

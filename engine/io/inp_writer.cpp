@@ -5,6 +5,8 @@
 //   *ELEMENT per kind         labels: tets, then pyramids, hexes; ELSET KIND_TET / _PYRAMID / _HEX
 //   *ELSET EALL, *NSET NALL   every element, every node (as ranges)
 //   *ELSET per volume region  (region name made a valid label, see abaqus_names.hpp)
+//   per region surface R      *NSET R, *ELSET R_S1 ... R_S6, *SURFACE R as a group's below, the
+//                             faces taken from R's region's elements (an assembly solid's top)
 //   per surface group G       *NSET G (its nodes); *ELSET G_S1 ... G_S6, the elements whose face
 //                             S1 ... S6 lies on G (what CalculiX's *FILM, *DFLUX and *DLOAD
 //                             take: "G_S3, F3, ..."); *SURFACE G, TYPE=ELEMENT from those sets
@@ -52,7 +54,8 @@ std::string element_type(CellKind k, const WriteOptions& o) {
     switch (o.inp_family) {
         case InpFamily::Stress: return shape;
         case InpFamily::HeatTransfer: return "D" + shape;
-        case InpFamily::Coupled: return shape + "T";
+        case InpFamily::Coupled: return shape;
+        case InpFamily::CoupledAbaqus: return shape + "T";
     }
     return shape;
 }
@@ -115,6 +118,7 @@ public:
         for (CellKind k : kAllCellKinds) elements(k);
         all_sets();
         region_sets();
+        region_surfaces();
         for (std::size_t g = 0; g < mesh_.surface_group_names.size(); ++g) group_sets(g);
         named_node_sets();
         shared_node_sets();
@@ -199,6 +203,13 @@ private:
         comment(types);
         if (collapsed())
             comment("pyramids are bricks with the apex repeated (nodes 1 2 3 4 5 5 5 5): base S1, sides S3 S4 S5 S6");
+        else if (mesh_.cell_count(CellKind::Pyramid) > 0)
+            comment("C3D5 is for Abaqus: CalculiX has no 5-node pyramid and refuses the file");
+        if (options_.inp_family == InpFamily::Coupled)
+            comment("coupled temperature-displacement for CalculiX: its *COUPLED TEMPERATURE-DISPLACEMENT step gives "
+                    "C3D4 / C3D8 the temperature (DOF 11); Abaqus needs --inp-family coupled-abaqus (C3D4T / C3D8T)");
+        else if (options_.inp_family == InpFamily::CoupledAbaqus)
+            comment("C3D4T / C3D8T are for Abaqus: CalculiX refuses them (--inp-family coupled writes its C3D4 / C3D8)");
         comment("sets: EALL every element, NALL every node, KIND_TET / KIND_PYRAMID / KIND_HEX, one element set per "
                 "region");
         comment("per surface group G: node set G, element sets G_S1 ... G_S6 (the elements whose face Sk lies on G)");
@@ -279,6 +290,37 @@ private:
             LabelList list(out_);
             for (CellKind k : kAllCellKinds)
                 for (index_t c : by_region[static_cast<int>(k)].group(r)) list.add(label(k, c));
+        }
+    }
+
+    // A surface seen from one region's cells (an assembly solid's top): node set, face sets and
+    // surface, as a group's.
+    void region_surfaces() {
+        if (!options_.description) return;
+        for (const RegionSurface& r : options_.description->region_surfaces) {
+            const FaceOwners owners = region_cell_faces(mesh_, r.region, r.groups);
+            std::array<std::vector<std::uint64_t>, kFaceNumbers> sets;
+            std::vector<index_t> nodes;
+            for (FaceKind k : {FaceKind::Tri, FaceKind::Quad})
+                for (index_t f = 0; f < mesh_.face_count(k); ++f) {
+                    const CellFaceRef& ref = owners[static_cast<int>(k)][f];
+                    if (ref.cell == kNoIndex) continue;
+                    const int s = abaqus_face_number(ref.kind, ref.local_face, collapsed());
+                    sets[static_cast<std::size_t>(s - 1)].push_back(label(ref.kind, ref.cell));
+                    for (index_t n : mesh_.face(k, f)) nodes.push_back(n);
+                }
+            for (auto& labels : sets) std::sort(labels.begin(), labels.end());
+            std::sort(nodes.begin(), nodes.end());
+            nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+            const std::string name = node_sets_.label(r.name);
+            surfaces_.label(name);
+            std::array<std::string, kFaceNumbers> names;
+            for (int s = 0; s < kFaceNumbers; ++s)
+                if (!sets[static_cast<std::size_t>(s)].empty())
+                    names[static_cast<std::size_t>(s)] = element_sets_.label(name + "_S" + std::to_string(s + 1));
+            node_set(name, nodes);
+            face_sets(names, sets);
+            surface(name, names);
         }
     }
 

@@ -14,9 +14,11 @@ namespace tubemesh {
 enum class MshEncoding { Ascii, Binary };
 
 // The .inp element family: stress/displacement C3D4 / C3D8 (which CalculiX also uses for heat
-// transfer), Abaqus heat transfer DC3D4 / DC3D8 (CalculiX reads them too), or coupled
-// temperature-displacement C3D4T / C3D8T.
-enum class InpFamily { Stress, HeatTransfer, Coupled };
+// transfer), Abaqus heat transfer DC3D4 / DC3D8 (CalculiX reads them too), coupled
+// temperature-displacement for CalculiX (C3D4 / C3D8: its *COUPLED TEMPERATURE-DISPLACEMENT
+// step gives them the temperature degree of freedom; it has no C3D*T), or for Abaqus
+// (C3D4T / C3D8T, which CalculiX refuses).
+enum class InpFamily { Stress, HeatTransfer, Coupled, CoupledAbaqus };
 // Pyramids in .inp: an 8-node brick with the apex repeated (nodes 1 2 3 4 5 5 5 5, faces
 // numbered as the brick's: base S1, sides S3-S6), which CalculiX and every Abaqus version
 // read; or the 5-node C3D5 (stress family only), for solvers that have it.

@@ -59,6 +59,15 @@ std::vector<std::string> mesh_notes(const HybridMesh& mesh, const MeshDescriptio
         if (s.flat) line += ", normal " + triple(s.normal);
         lines.push_back(line);
     }
+    if (description && !description->region_surfaces.empty()) {
+        lines.push_back("region surfaces: name, region (its element set), surface groups (the faces of the region's "
+                        "elements on them)");
+        for (const RegionSurface& r : description->region_surfaces) {
+            std::string line = "  " + r.name + "  " + mesh.region_names[r.region] + " ";
+            for (index_t g : r.groups) line += " " + mesh.surface_group_names[g];
+            lines.push_back(line);
+        }
+    }
     if (description && !description->node_sets.empty()) {
         std::string sets = "node sets:";
         for (const NamedNodeSet& n : description->node_sets)

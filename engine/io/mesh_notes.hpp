@@ -1,7 +1,8 @@
 #pragma once
 // The lines every mesh file carries as a comment (and the report prints): the length unit, and
 // for each surface group where it is - its alias on a built block, its CAD surface kind, face
-// count, area, centroid and, for a flat group, its outward normal - then the named node sets.
+// count, area, centroid and, for a flat group, its outward normal - then the region surfaces
+// (an assembly solid's top) and the named node sets.
 #include <string>
 #include <vector>
 

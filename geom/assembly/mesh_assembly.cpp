@@ -14,6 +14,7 @@
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/mesh/vec3_ops.hpp"
 #include "geom/assembly/assembly_occt.hpp"
+#include "geom/assembly/solid_tops.hpp"
 #include "geom/describe_groups.hpp"
 #include "geom/model_occt.hpp"
 #include "geom/prepare.hpp"
@@ -283,6 +284,7 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
     for (std::size_t t = 0; t < pipe.size(); ++t)
         if (pipe[t] == pipes.tubes.size()) pipes.tubes.push_back(tube_search.tubes[t]);
     describe_groups(whole, pipes, r.mesh, r.description);
+    describe_solid_tops(a, r.mesh, r.description);
 
     run.source = a.report().source;
     run.format = a.report().format;

@@ -15,6 +15,7 @@
 #include <StepGeom_GeomRepContextAndGlobUnitAssCtxAndGlobUncertaintyAssCtx.hxx>
 #include <StepGeom_GeometricRepresentationContextAndGlobalUnitAssignedContext.hxx>
 #include <StepRepr_GlobalUnitAssignedContext.hxx>
+#include <StepShape_Face.hxx>
 #include <StepShape_SolidModel.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TransferBRep.hxx>
@@ -150,6 +151,16 @@ CadFile read_step(const std::filesystem::path& path, int scale_exponent) {
         const TopoDS_Shape shape = TransferBRep::ShapeResult(process, item);
         if (!shape.IsNull()) out.names.emplace_back(shape, item->Name()->ToCString());
     }
+    // Named faces: each named face item (ADVANCED_FACE, ...) and the face it became. Exporters
+    // that name no face write '' or 'NONE'.
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+        const auto item = Handle(StepShape_Face)::DownCast(model->Value(i));
+        if (item.IsNull() || item->Name().IsNull() || item->Name()->Length() == 0) continue;
+        const std::string name = item->Name()->ToCString();
+        if (lower(name) == "none") continue;
+        const TopoDS_Shape shape = TransferBRep::ShapeResult(process, item);
+        if (!shape.IsNull()) out.face_names.emplace_back(shape, name);
+    }
     return out;
 }
 
@@ -249,7 +260,8 @@ CadFile read_cad_file(const std::filesystem::path& path, CadFormat format) {
         if (scaled.shape.IsNull()) {
             scaled = std::move(file);
             scaled.shape = scaled_to_working(scaled.shape, k);
-            scaled.names.clear();  // the names point at the unscaled solids
+            scaled.names.clear();  // the names point at the unscaled solids and faces
+            scaled.face_names.clear();
         }
         scaled.scale_exponent = k;
         return scaled;

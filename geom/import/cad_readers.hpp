@@ -25,6 +25,8 @@ struct CadFile {
     // STEP only: the solids the file names (their MANIFOLD_SOLID_BREP's name), in file order, as
     // the translator made them: the reader's healing may hand `shape` copies of them.
     std::vector<std::pair<TopoDS_Shape, std::string>> names;
+    // STEP only: the faces the file names, as the translator made them.
+    std::vector<std::pair<TopoDS_Shape, std::string>> face_names;
     // `shape` is the file's scaled by 10^-scale_exponent (geom/working_scale.hpp).
     int scale_exponent = 0;
 };

@@ -6,13 +6,16 @@
 #include <GProp_GProps.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shell.hxx>
 
 #include <fmt/format.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -96,6 +99,19 @@ std::string solid_name(const CadFile& file, const TopoDS_Shape& solid, int solid
     return solids == 1 && file.names.size() == 1 ? file.names.front().second : std::string();
 }
 
+// Per face of `solid` in TopExp order (its Model face ids), the name the file gives it. Healing
+// that rebuilt a face loses its name.
+std::vector<std::string> face_names_of(const CadFile& file, const TopoDS_Shape& solid) {
+    std::vector<std::string> out;
+    if (file.face_names.empty()) return out;
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    out.resize(static_cast<std::size_t>(faces.Extent()));
+    for (const auto& [shape, name] : file.face_names)
+        if (const int id = faces.FindIndex(shape); id > 0) out[static_cast<std::size_t>(id - 1)] = name;
+    return out;
+}
+
 }  // namespace
 
 Model import_model(const std::filesystem::path& path, const ImportOptions& options) {
@@ -154,6 +170,7 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
                         (healing_ran ? " even after healing" : options.heal ? " and healing it failed" : "") + " (" +
                         problems + "): repair it in the CAD tool or export it again");
 
+        report.face_names = face_names_of(file, final_solids.front());
         GProp_GProps props;
         BRepGProp::VolumeProperties(final_solids.front(), props);
         if (props.Mass() <= 0)

@@ -11,6 +11,8 @@
 #include <StepShape_ShapeDefinitionRepresentation.hxx>
 #include <StepShape_SolidModel.hxx>
 #include <TCollection_HAsciiString.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TransferBRep.hxx>
 #include <TransferBRep_ShapeMapper.hxx>
 #include <Transfer_FinderProcess.hxx>
@@ -20,9 +22,11 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "engine/core/types.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "geom/face_names.hpp"
 #include "geom/model_occt.hpp"
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/step_write_occt.hpp"
@@ -60,17 +64,17 @@ namespace {
 // The name of the representation items each shape became: a solid of a compound is written
 // as a shape definition whose representation holds its MANIFOLD_SOLID_BREP.
 void name_items(STEPControl_Writer& writer, const TopoDS_Shape& root, std::span<const NamedShape> names) {
-    // A lone solid written as the root: the writer maps it to its product, not to the solid's
-    // item, so name the model's one solid item directly.
-    if (names.size() == 1 && names.front().first.IsSame(root) && root.ShapeType() == TopAbs_SOLID) {
-        const Handle(StepData_StepModel) model = writer.Model();
-        for (int i = 1; i <= model->NbEntities(); ++i)
-            if (const auto solid = Handle(StepShape_SolidModel)::DownCast(model->Value(i)); !solid.IsNull())
-                solid->SetName(new TCollection_HAsciiString(names.front().second.c_str()));
-        return;
-    }
     const Handle(Transfer_FinderProcess) process = writer.WS()->TransferWriter()->FinderProcess();
     for (const auto& [shape, name] : names) {
+        // A lone solid written as the root: the writer maps it to its product, not to the solid's
+        // item, so name the model's one solid item directly.
+        if (shape.IsSame(root) && root.ShapeType() == TopAbs_SOLID) {
+            const Handle(StepData_StepModel) model = writer.Model();
+            for (int i = 1; i <= model->NbEntities(); ++i)
+                if (const auto solid = Handle(StepShape_SolidModel)::DownCast(model->Value(i)); !solid.IsNull())
+                    solid->SetName(new TCollection_HAsciiString(name.c_str()));
+            continue;
+        }
         const Handle(TransferBRep_ShapeMapper) mapper = TransferBRep::ShapeMapper(process, shape);
         const Handle(Standard_Transient) found = process->FindTransient(mapper);
         const Handle(TCollection_HAsciiString) text = new TCollection_HAsciiString(name.c_str());
@@ -126,12 +130,16 @@ void write_step(const Model& model, const std::filesystem::path& path) {
     const std::string& name = model.report().name;
     // Back at the source's scale (a scaled model's tolerances are reset on the way).
     const TopoDS_Shape solid = scaled_to_working(solid_of(model), -model.scale_exponent());
-    if (name.empty()) {
-        write_step_shape(solid, path, model.report().length_unit);
-    } else {
-        const NamedShape named[] = {{solid, name}};
-        write_step_shape(solid, path, model.report().length_unit, named);
-    }
+    std::vector<NamedShape> named;
+    if (!name.empty()) named.emplace_back(solid, name);
+    // The scaled copy keeps the faces' order, so face id i is the i-th face of either.
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    const std::vector<std::string> face_name = face_names(model);
+    for (int id = 1; id <= faces.Extent() && id <= static_cast<int>(face_name.size()); ++id)
+        if (!face_name[static_cast<std::size_t>(id - 1)].empty())
+            named.emplace_back(faces(id), face_name[static_cast<std::size_t>(id - 1)]);
+    write_step_shape(solid, path, model.report().length_unit, named);
 }
 
 }  // namespace tubemesh::geom

@@ -9,7 +9,9 @@ namespace tubemesh::geom {
 // Writes the solid with its source's coordinates (a model held at working scale is scaled back),
 // labelled with the model's length unit when STEP has a name for it (millimetre, metre,
 // centimetre, inch, foot, ...), else millimetre, and
-// named with the model's name when it has one (import reads it back into ImportReport::name).
+// named with the model's name when it has one (import reads it back into ImportReport::name),
+// its faces with their names (geom/face_names.hpp: a built block's top, bottom, ...; import reads
+// them back into ImportReport::face_names).
 // The file appears under `path` only when complete: it is written to a temporary name in the
 // same directory and renamed. Throws tubemesh::Error when the directory is not writable or
 // OpenCASCADE cannot translate the shape.

@@ -22,6 +22,7 @@
 #include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"
+#include "tests/support/readme_blocks.hpp"
 
 namespace tubemesh {
 namespace {
@@ -118,16 +119,10 @@ TEST_F(DamBlockInCalculix, GravityMovesTheTopAsAColumn) {
 // The deck between the README's "calculix-deck" markers runs as written on the block that
 // tools/run.sh writes (dam_block.inp).
 TEST_F(DamBlockInCalculix, TheReadmeDeckRunsAsWritten) {
-    std::ifstream readme(std::string(TUBEMESH_SOURCE_DIR) + "/README.md");
-    std::stringstream text;
-    text << readme.rdbuf();
-    const std::string s = text.str();
-    const std::string begin = "<!-- calculix-deck -->\n```\n", end = "```\n<!-- /calculix-deck -->";
-    const std::size_t from = s.find(begin), to = s.find(end);
-    ASSERT_NE(from, std::string::npos) << "README has no calculix-deck block";
-    ASSERT_NE(to, std::string::npos);
+    const std::string deck = testing::readme_block("calculix-deck");
+    ASSERT_FALSE(deck.empty());
     TempDir work;
-    testing::write_text(work / "dam_heat.inp", s.substr(from + begin.size(), to - from - begin.size()));
+    testing::write_text(work / "dam_heat.inp", deck);
     std::filesystem::copy_file(inp_, work / "dam_block.inp");
     TempDir run;
     const json r = calculix("deck", {(work / "dam_heat.inp").string(), (work / "dam_block.inp").string(),

@@ -2,7 +2,7 @@
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
 // [--tet-relax R] [--move-apexes] [--fixed-surface] [--max-elements N] [--report FILE.json] [--html FILE.html]
 // [--quiet] [--solid K | --assembly [--glue-tolerance D]] [--until STAGE] [--msh-ascii]
-// [--inp-family stress|heat|coupled] [--inp-pyramid hex|c3d5]
+// [--inp-family stress|heat|coupled|coupled-abaqus] [--inp-pyramid hex|c3d5]
 // [--pipe-network [--film-coefficient H] [--reverse-flow K ...]]`: mesh a
 // CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
 // show progress, print the phases, Table 1 and where each surface group is, and write the mesh
@@ -229,11 +229,13 @@ Command add_mesh_command(CLI::App& app) {
     cmd->add_flag("--msh-ascii", args->msh_ascii, "Write .msh files as text (default: binary)");
     cmd->add_option("--inp-family", args->inp_family,
                     "Element family of .inp files: stress (C3D4/C3D8, default; CalculiX uses them for heat transfer "
-                    "too), heat (Abaqus DC3D4/DC3D8), coupled (C3D4T/C3D8T)")
+                    "too), heat (DC3D4/DC3D8, Abaqus and CalculiX), coupled (coupled temperature-displacement for "
+                    "CalculiX: C3D4/C3D8, which its *COUPLED TEMPERATURE-DISPLACEMENT step gives the temperature), "
+                    "coupled-abaqus (C3D4T/C3D8T: Abaqus only, CalculiX refuses them)")
         ->check(CLI::IsMember(run::kInpFamilies));
     cmd->add_option("--inp-pyramid", args->inp_pyramid,
                     "Pyramids in .inp files: hex (a C3D8 with the apex repeated, which CalculiX and Abaqus read; "
-                    "default) or c3d5 (the 5-node pyramid, stress family only)")
+                    "default) or c3d5 (the 5-node pyramid, stress family only: Abaqus only, CalculiX refuses it)")
         ->check(CLI::IsMember(run::kInpPyramids));
     cmd->add_flag("--pipe-network", args->pipe_network,
                   "Write the water in every pipe into the .inp as a CalculiX fluid network (sets pipe_<k>_water, "
@@ -323,6 +325,11 @@ Command add_mesh_command(CLI::App& app) {
                         meshed.tubes == 1 ? "" : "s", meshed.size, meshed.sweep_size));
         for (const std::string& line : meshed.model_lines) say("  " + line);
         for (const std::string& w : r.warnings) fmt::print(stderr, "tubemesh: warning: {}\n", w);
+        if (write.inp_pyramid == InpPyramid::C3D5 && r.mesh.cell_count(CellKind::Pyramid) > 0)
+            for (const std::string& out : args->outputs)
+                if (run::lower_extension(out) == ".inp")
+                    fmt::print(stderr, "tubemesh: warning: {} holds C3D5 pyramids, which only Abaqus reads (CalculiX "
+                               "refuses them: leave --inp-pyramid out for bricks with the apex repeated)\n", out);
         if (r.reached != kLastStage)
             say(fmt::format("note: stopped after the {} stage (--until)", stage_name(r.reached)));
         say("");

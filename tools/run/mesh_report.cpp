@@ -135,6 +135,15 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
                              {"warnings", r.warnings},
                              {"model", run.model_lines},
                              {"outputs", outputs}};
+    if (!r.description.region_surfaces.empty()) {
+        nlohmann::json surfaces = nlohmann::json::array();
+        for (const RegionSurface& s : r.description.region_surfaces) {
+            std::vector<std::string> groups;
+            for (index_t g : s.groups) groups.push_back(m.surface_group_names[g]);
+            surfaces.push_back({{"name", s.name}, {"region", m.region_names[s.region]}, {"groups", groups}});
+        }
+        report["region_surfaces"] = surfaces;
+    }
     if (const PaperExample* paper = paper_example(run.name))
         report["paper_table1"] = paper_table_json(*paper, paper_rows(*paper, r.quality, m.point_count()));
     return report;

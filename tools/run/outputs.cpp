@@ -97,9 +97,10 @@ WriteOptions write_options(bool msh_ascii, const std::string& inp_family, const 
     check_member(inp_pyramid, kInpPyramids, pyramid);
     WriteOptions o;
     o.msh_encoding = msh_ascii ? MshEncoding::Ascii : MshEncoding::Binary;
-    o.inp_family = inp_family == "heat"      ? InpFamily::HeatTransfer
-                   : inp_family == "coupled" ? InpFamily::Coupled
-                                             : InpFamily::Stress;
+    o.inp_family = inp_family == "heat"             ? InpFamily::HeatTransfer
+                   : inp_family == "coupled"        ? InpFamily::Coupled
+                   : inp_family == "coupled-abaqus" ? InpFamily::CoupledAbaqus
+                                                    : InpFamily::Stress;
     o.inp_pyramid = inp_pyramid == "c3d5" ? InpPyramid::C3D5 : InpPyramid::CollapsedHex;
     if (o.inp_pyramid == InpPyramid::C3D5 && o.inp_family != InpFamily::Stress)
         throw Error(pyramid + " c3d5 has no heat-transfer or coupled variant: use " + pyramid + " hex with " + family +

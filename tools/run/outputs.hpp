@@ -20,7 +20,7 @@ std::string lower_extension(const std::string& path);
 void require_writable(const std::string& path);
 
 // The .inp element families and pyramid forms by name, the default first.
-inline const std::vector<std::string> kInpFamilies = {"stress", "heat", "coupled"};
+inline const std::vector<std::string> kInpFamilies = {"stress", "heat", "coupled", "coupled-abaqus"};
 inline const std::vector<std::string> kInpPyramids = {"hex", "c3d5"};
 
 // How mesh files are written: .msh as text or binary, the .inp family and pyramid form by the

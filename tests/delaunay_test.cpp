@@ -355,6 +355,35 @@ TEST(Delaunay, ExactlyCosphericalIntegerPoints) {
     EXPECT_EQ(s.vertices, p.size());
 }
 
+// A grid is co-spherical everywhere: the filter leaves many conflict tests undecided, and a tet
+// beside several cavity tets is decided exactly once per cavity, not once per neighbour.
+TEST(Triangulation, CosphericalTiesDecidedOncePerCavity) {
+    const Points p = grid(8, 7, 6);
+    Triangulation tri;
+    std::vector<double> xyz;
+    std::vector<index_t> ids;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto a = p.at(i);
+        xyz.insert(xyz.end(), a.begin(), a.end());
+        ids.push_back(static_cast<index_t>(i));
+    }
+    tri.add_points(xyz, ids);
+    const std::vector<index_t> corners{0, 7, 8 * 6, static_cast<index_t>(p.size() - 1)};
+    ASSERT_EQ(tri.start(corners).size(), 4u);
+    std::erase_if(ids, [&](index_t v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); });
+    tri.insert(ids, 1, 1024);
+    const KernelCounters& c = tri.counters();
+    EXPECT_GT(c.exact_insphere, 1000u);
+    EXPECT_GT(c.exact_insphere_reused, 0u);
+    EXPECT_LT(c.exact_insphere_reused, c.exact_insphere);
+    DelaunayResult r;
+    r.tets = tri.finish();
+    r.duplicates = tri.duplicates();
+    const auto s = check_delaunay(p, r);
+    check_empty_spheres_brute_force(p, r);
+    EXPECT_EQ(s.vertices, p.size());
+}
+
 TEST(Delaunay, PointsOnASphere) {
     std::mt19937_64 rng(3);
     std::normal_distribution<double> g;

@@ -147,6 +147,20 @@ TEST(PredicatesSos, InsphereMatchesDefinition) {
     EXPECT_GT(coplanar, 100);  // the position perturbation is exercised, not only the lifting
 }
 
+// The entry point for callers whose filter abstained gives insphere_sos's answer, ties included.
+TEST(PredicatesSos, InsphereUnfilteredAgreesWithFiltered) {
+    std::mt19937_64 rng(11);
+    for (int trial = 0; trial < 4000; ++trial) {
+        const std::vector<Point> p = grid_points(rng, 5);
+        const std::vector<std::uint32_t> id = distinct_indices(rng, 5);
+        ASSERT_EQ(insphere_sos_unfiltered(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), id[0],
+                                          id[1], id[2], id[3], id[4]),
+                  insphere_sos(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data(), id[0], id[1], id[2],
+                               id[3], id[4]))
+            << "trial " << trial;
+    }
+}
+
 // Ties among coordinates spread over the whole double range: the symbolic terms' minors need
 // the wide integer path.
 TEST(PredicatesSos, InsphereMatchesDefinitionOverWideRange) {

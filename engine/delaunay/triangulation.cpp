@@ -27,6 +27,8 @@ KernelCounters& KernelCounters::operator+=(const KernelCounters& o) {
     serial_inserted += o.serial_inserted;
     blocked += o.blocked;
     shrunk += o.shrunk;
+    exact_insphere += o.exact_insphere;
+    exact_insphere_reused += o.exact_insphere_reused;
     seconds_passes += o.seconds_passes;
     seconds_serial += o.seconds_serial;
     return *this;
@@ -105,14 +107,29 @@ void Triangulation::note_memory() {
 
 // The common case inline: a finite tet and a filter that decides. Ties and ghosts go to
 // out-of-line code.
-inline bool Triangulation::in_conflict(index_t tet, const double* pp, index_t p) const {
+inline bool Triangulation::in_conflict(index_t tet, const double* pp, index_t p, Part& part, Scratch& s) const {
     const index_t* v = tets_.vertex(tet);
     if (is_ghost(v)) [[unlikely]]
         return ghost_in_conflict(tet, pp, p);
-    const int s = pred::detail::insphere_filter(point(v[0]), point(v[1]), point(v[2]), point(v[3]), pp);
-    if (s != 0) [[likely]]
-        return s > 0;
-    return insphere_exact(v, pp, p) > 0;
+    const int sign = pred::detail::insphere_filter(point(v[0]), point(v[1]), point(v[2]), point(v[3]), pp);
+    if (sign != 0) [[likely]]
+        return sign > 0;
+    return tie_in_conflict(tet, pp, p, part, s);
+}
+
+bool Triangulation::tie_in_conflict(index_t tet, const double* pp, index_t p, Part& part, Scratch& s) const {
+    ++part.counters.exact_insphere;
+    for (const auto& [t, in] : s.ties)
+        if (t == tet) {
+            ++part.counters.exact_insphere_reused;
+            return in;
+        }
+    const index_t* v = tets_.vertex(tet);
+    const index_t v0 = v[0] & ~kCavityMark;
+    const bool in = pred::insphere_sos_unfiltered(point(v0), point(v[1]), point(v[2]), point(v[3]), pp, global_[v0],
+                                                  global_[v[1]], global_[v[2]], global_[v[3]], global_[p]) > 0;
+    s.ties.push_back({tet, in});
+    return in;
 }
 
 // v may be the row of a cavity tet (the finite tet behind a ghost): mask its mark.
@@ -337,6 +354,7 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
     const double* pp = point(p);
     s.cavity.clear();
     s.boundary.clear();
+    s.ties.clear();
     mark(tets_.vertex(start));
     s.cavity.push_back(start);
     bool left_part = false;
@@ -355,7 +373,7 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
             }
             const index_t n = code >> 2;
             if (is_marked(tets_.vertex(n))) continue;
-            if (in_conflict(n, pp, p)) {
+            if (in_conflict(n, pp, p, part, s)) {
                 if constexpr (kParts) {
                     // n shares a face with an owned tet: only its opposite vertex can be foreign.
                     const index_t w = tets_.vertex(n)[code & 3];
@@ -431,7 +449,7 @@ InsertStatus Triangulation::insert_one(index_t p, Part& part, Scratch& s) {
         for (std::size_t i = 0; i < redo; ++i) {
             const index_t outer = s.boundary[i % nb].outer;
             if (outer == kNoAdjacent) continue;  // a front face (constrained mode): no tet behind it
-            sink += in_conflict(outer >> 2, pp, p);
+            sink += in_conflict(outer >> 2, pp, p, part, s);
             asm volatile("" : "+r"(sink) : : "memory");
         }
     }

@@ -67,6 +67,11 @@ struct KernelCounters {
     std::uint64_t serial_inserted = 0;
     std::uint64_t blocked = 0;   // constrained mode: points skipped (InsertStatus::Blocked)
     std::uint64_t shrunk = 0;    // constrained mode: cavities shrunk to be star-shaped
+    // Conflict tests the insphere filter left undecided (exact ties, as co-spherical points of
+    // structured layers give, and near-ties), and of those the ones a cavity met again and
+    // answered from its earlier exact result.
+    std::uint64_t exact_insphere = 0;
+    std::uint64_t exact_insphere_reused = 0;
     double seconds_passes = 0;  // wall time in parallel passes, set-up included
     double seconds_serial = 0;  // wall time of serial insertion
 
@@ -153,7 +158,8 @@ private:
     // Constrained mode: shrinks the cavity in `s` until p sees every boundary face; false when
     // the tet `start` (holding p) would have to go.
     bool shrink_to_visible(index_t p, index_t start, Scratch& s);
-    bool in_conflict(index_t tet, const double* pp, index_t p) const;
+    bool in_conflict(index_t tet, const double* pp, index_t p, Part& part, Scratch& s) const;
+    bool tie_in_conflict(index_t tet, const double* pp, index_t p, Part& part, Scratch& s) const;
     bool ghost_in_conflict(index_t tet, const double* pp, index_t p) const;
     int insphere_exact(const index_t* v, const double* pp, index_t p) const;  // with ties broken
     void link_new_tets(Scratch& s);

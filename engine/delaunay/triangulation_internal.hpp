@@ -126,6 +126,10 @@ struct Triangulation::Scratch {
     std::vector<index_t> extra;
     std::vector<index_t> boundary_vertices;
     std::vector<index_t> kept;  // constrained mode: the cavity while it is shrunk, sorted
+    // The current cavity's exact insphere answers (tet, in conflict): a tet outside the cavity
+    // is tested once from each cavity tet beside it, and a co-spherical tie costs the exact
+    // determinant and the perturbation each time.
+    std::vector<std::pair<index_t, bool>> ties;
     // edge_face[la * count + lb], count = the cavity's boundary vertex count: face code of the
     // new tet whose face holds the directed boundary edge a->b. Never cleared: every entry
     // read was written for the same cavity.

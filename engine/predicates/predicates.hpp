@@ -40,6 +40,11 @@ int orient3d_sos(const double* a, const double* b, const double* c, const double
                  std::uint32_t ib, std::uint32_t ic, std::uint32_t id);
 int insphere_sos(const double* a, const double* b, const double* c, const double* d, const double* e,
                  std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie);
+// insphere_sos for a caller whose own insphere filter (filters.hpp) has abstained: the same
+// result without evaluating the filter a second time.
+int insphere_sos_unfiltered(const double* a, const double* b, const double* c, const double* d, const double* e,
+                            std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id,
+                            std::uint32_t ie);
 
 // Intersection of closed simplices, decided exactly.
 enum class Contact : std::uint8_t {

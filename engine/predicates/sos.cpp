@@ -220,15 +220,30 @@ int orient3d_sos(const double* a, const double* b, const double* c, const double
     return -parity * perturbed_sign<4, false>(points);
 }
 
-int insphere_sos(const double* a, const double* b, const double* c, const double* d, const double* e,
-                 std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
-    const int s = insphere(a, b, c, d, e);
+namespace {
+
+// insphere_sos once the unperturbed sign s is known.
+int insphere_perturbed(int s, const double* a, const double* b, const double* c, const double* d, const double* e,
+                       std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
     if (s != 0) return s;
     const double* points[5] = {a, b, c, d, e};
     std::uint32_t index[5] = {ia, ib, ic, id, ie};
     const int parity = sort_by_index<5>(points, index);
     if (parity == 0) return 0;
     return -parity * perturbed_sign<5, true>(points);
+}
+
+}  // namespace
+
+int insphere_sos(const double* a, const double* b, const double* c, const double* d, const double* e,
+                 std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
+    return insphere_perturbed(insphere(a, b, c, d, e), a, b, c, d, e, ia, ib, ic, id, ie);
+}
+
+int insphere_sos_unfiltered(const double* a, const double* b, const double* c, const double* d, const double* e,
+                            std::uint32_t ia, std::uint32_t ib, std::uint32_t ic, std::uint32_t id,
+                            std::uint32_t ie) {
+    return insphere_perturbed(detail::insphere_exact(a, b, c, d, e), a, b, c, d, e, ia, ib, ic, id, ie);
 }
 
 }  // namespace tubemesh::predicates

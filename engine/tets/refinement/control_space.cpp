@@ -106,3 +106,25 @@ ControlSpace::Sample ControlSpace::sample(const double* p) const {
 }
 
 }  // namespace tubemesh::tets
+
+namespace tubemesh::tets {
+
+index_t ControlSpace::source(const double* p) const {
+    NearestBuffer buffer(neighbours_);
+    index_t* idx = buffer.index();
+    double* d2 = buffer.distance_squared();
+    const index_t found = index_->nearest_unordered({p[0], p[1], p[2]}, neighbours_, idx, d2);
+    index_t best = idx[0];
+    double h = std::numeric_limits<double>::infinity();
+    // Ties to the lowest node id: the same answer whatever order the query returns.
+    for (index_t i = 0; i < found; ++i) {
+        const double t = node_size_[idx[i]] + slope_ * std::sqrt(d2[i]);
+        if (t < h || (t == h && idx[i] < best)) {
+            h = t;
+            best = idx[i];
+        }
+    }
+    return best;
+}
+
+}  // namespace tubemesh::tets

@@ -3,6 +3,7 @@
 // edges at each front node), graded away from the front towards the far size S. With gradation
 // g, h may grow by at most the factor g per element: h(x) = min(S, min_i s_i + (g - 1) |x - x_i|),
 // the minimum taken over the k front nodes nearest x (a nanoflann query, engine/mesh/point_index).
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,15 @@ public:
         double nearest_front = 0;
     };
     Sample sample(const double* p) const;
+    // The front node whose term decides size(p) before the cap: the argmin of
+    // node_size(i) + slope() |p - node(i)| over the nodes size() consults. One k-nearest query,
+    // as size(p); with it, term(i, q) gives h at points q near p without a query (carried_size).
+    index_t source(const double* p) const;
+    // node_size(i) + slope() |p - node(i)|.
+    double term(index_t i, const double* p) const {
+        const double dx = p[0] - x_[i], dy = p[1] - y_[i], dz = p[2] - z_[i];
+        return node_size_[i] + slope_ * std::sqrt(dx * dx + dy * dy + dz * dz);
+    }
     // size(p), the same value, for a point likely to lie where h has reached S (a caller's hint,
     // such as a face whose points are all at S): when no front node lies within far_reach() of
     // p, every node's term is at least S and one "any node within" query answers; otherwise
@@ -54,6 +64,8 @@ public:
     // Local size of front node i (mean incident front edge length).
     double node_size(index_t i) const { return node_size_[i]; }
     double far_size() const { return far_size_; }
+    // The most h grows per unit length: gradation - 1.
+    double slope() const { return slope_; }
     // No size() result is below this: min(far size, smallest node size).
     double smallest_size() const { return smallest_size_; }
 

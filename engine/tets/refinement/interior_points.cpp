@@ -64,7 +64,35 @@ Vec3 nearest_bcc_node(const Vec3& p, double a) {
     return distance2(p, corner) <= distance2(p, centre) ? corner : centre;
 }
 
+// The lattice node moved by a fixed, tiny offset (kLatticeJitter of the cube edge at most per
+// axis) drawn from a hash of the node: a lattice's points are co-spherical by the dozen, and
+// every such exact tie costs the kernel the exact insphere and the symbolic perturbation, while
+// ties this far from exact are decided by the floating-point filter. The same node always gets
+// the same offset, so two faces proposing it still propose one point.
+constexpr double kLatticeJitter = 1e-4;
+Vec3 jittered(const Vec3& node, double a) {
+    std::uint64_t h = 0x9e3779b97f4a7c15u;
+    for (double c : {node.x, node.y, node.z}) {
+        h ^= static_cast<std::uint64_t>(std::llround(2 * c / a)) + 0x9e3779b97f4a7c15u + (h << 6) + (h >> 2);
+        h *= 0xbf58476d1ce4e5b9u;
+        h ^= h >> 31;
+    }
+    const auto offset = [&](int shift) { return a * kLatticeJitter * (double((h >> shift) & 0xFFFFF) / 0x100000 - 0.5); };
+    return {node.x + offset(0), node.y + offset(21), node.z + offset(42)};
+}
+
 }  // namespace
+
+CarriedSize carried_size(const MeshView& m, const index_t* v, const double* p, const ControlSpace& space) {
+    CarriedSize best{space.far_size(), kNoIndex};
+    for (int k = 0; k < 4; ++k) {
+        const index_t i = m.source[v[k]];
+        if (i == kNoIndex || i == best.source) continue;
+        const double h = space.term(i, p);
+        if (h < best.h || (h == best.h && i < best.source)) best = {h, i};
+    }
+    return best;
+}
 
 std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace& space) {
     std::vector<double> h(xyz.size() / 3);
@@ -72,6 +100,14 @@ std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace&
         for (std::size_t i = r.begin(); i < r.end(); ++i) h[i] = space.size(xyz.data() + 3 * i);
     });
     return h;
+}
+
+std::vector<index_t> point_sources(std::span<const double> xyz, const ControlSpace& space) {
+    std::vector<index_t> source(xyz.size() / 3);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) source[i] = space.source(xyz.data() + 3 * i);
+    });
+    return source;
 }
 
 bool tet_too_big(const MeshView& m, index_t tet, double tolerance) {
@@ -141,6 +177,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
     std::vector<ProposalMemo::Entry> now(faces.size());
     std::vector<Candidate> out(faces.size());
     std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
+    const double far = space.far_size();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::uint64_t reused = 0;
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -151,7 +188,6 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             std::copy_n(v, 4, e.ids.begin());
             const auto hit = std::lower_bound(before.begin(), before.end(), faces[i],
                                               [](const ProposalMemo::Entry& x, index_t code) { return x.face < code; });
-            bool far_face = false;  // which way to ask the control space (not what it answers)
             if (hit != before.end() && hit->face == faces[i] && hit->ids == e.ids) {
                 e = *hit;
                 ++reused;
@@ -174,23 +210,18 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 const Vec3 first = apex(h_face);
                 const Vec3 mid = 0.5 * (g + first);
                 const double mq[3] = {mid.x, mid.y, mid.z};
-                // A face whose points are at S most likely proposes where h is S too: ask the
-                // cheaper way first (the same value either way).
-                far_face = h_face >= space.far_size();
-                const double h_mid = far_face ? space.size_if_far(mq) : space.size(mq);
+                const double h_mid = carried_size(m, v, mq, space).h;
                 Vec3 p = apex(h_mid);
                 e.h = kUnknown;
                 // Snap only where h is the far size (the lattice's spacing is right there) and the
                 // front is far enough for advancing-front layers to fill the seam between them.
-                // The test at the node needs one more nearest-node query: only ideal points
-                // already at the far size ask it (on the serpentine lift, none of whose tets
-                // reach it, asking every one cost 10-20 % of the refinement).
-                const double far = space.far_size();
+                // The test at the node needs a query of the front's nodes: only ideal points
+                // already at the far size ask it.
                 if (lattice.spacing > 0 && h_mid >= far) {
                     const Vec3 node = nearest_bcc_node(p, lattice.spacing * far);
                     const double nq[3] = {node.x, node.y, node.z};
                     if (space.far_and_clear(nq, lattice.clearance * far)) {
-                        p = node;
+                        p = jittered(node, lattice.spacing * far);
                         e.h = far;
                     }
                 }
@@ -201,9 +232,10 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             known[i] = 1;
             const index_t holder = walk_to(m, t, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
             if (holder == kNoIndex) continue;
-            // h at the point only for points that may be inserted (most walks succeed).
-            if (std::isnan(e.h)) e.h = far_face ? space.size_if_far(e.p) : space.size(e.p);
-            out[i] = {{e.p[0], e.p[1], e.p[2]}, e.h, holder};
+            // h at the point from the corners of the tet that holds it, its nearest mesh points.
+            const CarriedSize h = std::isnan(e.h) ? carried_size(m, m.tets.vertex(holder), e.p, space)
+                                                  : CarriedSize{e.h, kNoIndex};
+            out[i] = {{e.p[0], e.p[1], e.p[2]}, h.h, holder, h.source};
             ok[i] = 1;
         }
         memo.reused_total.fetch_add(reused, std::memory_order_relaxed);

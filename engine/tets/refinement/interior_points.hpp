@@ -24,6 +24,7 @@ struct Candidate {
     double p[3];
     double h;
     index_t tet;
+    index_t source;  // the front node whose graded term gives h (kNoIndex for a lattice node)
 };
 
 // Points given by kernel-style arrays: 3 coordinates per point id, and the target size h at
@@ -34,10 +35,16 @@ struct MeshView {
     const delaunay::TetStore& tets;  // may hold free slots (vertex[0] == kFreeSlot)
     std::span<const double> xyz;
     std::span<const double> h;  // one per point id
+    // Per point id, the front node whose graded term gives its h (ControlSpace::source, a
+    // candidate's source for a point it inserts; kNoIndex: none, h is the far size). Needed by
+    // propose_points.
+    std::span<const index_t> source = {};
 };
 
 // The control space's h at each point (3 coordinates each), in parallel.
 std::vector<double> point_sizes(std::span<const double> xyz, const ControlSpace& space);
+// ControlSpace::source at each point, in parallel.
+std::vector<index_t> point_sources(std::span<const double> xyz, const ControlSpace& space);
 
 // True when the tet's mean edge length exceeds `tolerance` times the mean h of its four points:
 // as good as h at the centroid, without a nearest-node query per new tet.
@@ -65,31 +72,47 @@ std::vector<index_t> active_faces(const MeshView& mesh, double tolerance, TooBig
 
 // The far-field lattice: where the size field is the far size S and the front is far away, an
 // ideal point is replaced by the nearest node of a body-centred cubic lattice (cube corners and
-// centres, a corner at the origin). Advancing-front points there sit at random offsets from
-// one another, and flips and smoothing only partly repair that; the lattice's Delaunay tets
-// are all alike, with collapse 0.958. The front-near and graded parts stay advancing front.
+// centres, a corner at the origin), moved by at most 1e-4 of the cube edge per axis (a hash of
+// the node: no exact co-spherical ties for the kernel). Advancing-front points there sit at
+// random offsets from one another, and flips and smoothing only partly repair that; the
+// lattice's Delaunay tets are all alike, with collapse 0.958. The front-near and graded parts
+// stay advancing front.
 struct FarLattice {
     double spacing = 0;    // cube edge over S; 0: no lattice
     double clearance = 0;  // least distance from a lattice point to the nearest front node, over S
 };
 
+// The target size at p carried by the mesh points v[0..4) (a tet's corners near p): the control
+// space's graded minimum min(S, s_i + (g - 1) |p - x_i|) taken over the front nodes i that
+// decide h at those points (MeshView::source) instead of over p's nearest front nodes, so no
+// nearest-node query per point. Seeded from the front (point_sources) and passed on to each
+// inserted point, the sources follow the front outwards; since the distance is measured to
+// the node itself, not summed along a chain of points, h grows as the control space's does.
+struct CarriedSize {
+    double h;
+    index_t source;  // kNoIndex when h is the far size
+};
+CarriedSize carried_size(const MeshView& mesh, const index_t* v, const double* p, const ControlSpace& space);
+
 // One ideal point per active face: the apex of a near-regular tet of size h on the face, on
-// the side of the face's tet, h asked of `space` halfway to the apex that the mean h of the
-// face's points gives; dropped when a walk from that tet leaves the region through the front.
-// Parallel; the order follows `faces`.
+// the side of the face's tet, h carried by that tet's corners (carried_size) halfway to the
+// apex that the mean h of the face's points gives; dropped when a walk from that tet leaves
+// the region through the front. The candidate's h is carried by the corners of the tet that
+// holds it (the far size for a lattice node). `space` gives S, the gradation and, for the
+// lattice, the clearance test. Parallel; the order follows `faces`.
 std::vector<Candidate> propose_points(const MeshView& mesh, std::span<const index_t> faces,
                                       const ControlSpace& space, const FarLattice& lattice = {});
 
 // Ideal points of the previous round's active faces, by face code 4*t+f with t's point ids in
-// order: the ideal point and its h depend only on those, so a face that is active again in an
-// unchanged tet reuses them (its walk to the holding tet, which depends on the mesh, is redone).
+// order: the ideal point depends only on those, so a face that is active again in an unchanged
+// tet reuses it (its walk to the holding tet and its h there, which depend on the mesh, are redone).
 // Valid for one point array and size array (appended to only), one ControlSpace and one FarLattice.
 struct ProposalMemo {
     struct Entry {
         index_t face;
         std::array<index_t, 4> ids;
         double p[3];
-        double h;  // NaN until asked for
+        double h;  // the far size for a lattice node, else NaN (carried by the holding tet)
     };
     std::vector<Entry> entries;  // increasing face
     std::atomic<std::uint64_t> reused_total{0};  // faces that reused an entry

@@ -29,12 +29,15 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         GrowingPoints live(tri.points());
         TooBigMemo memo;
         ProposalMemo proposals;
-        // h at every point, by kernel id: the front's and Steiner points' now, each inserted
-        // point's from its candidate.
-        std::vector<double> sizes = point_sizes(tri.points(), space);
+        // h at every point, by kernel id, and the front node that decides it: the front's and
+        // Steiner points' from the control space now, each inserted point's from its candidate.
+        std::vector<index_t> sources = point_sources(tri.points(), space);
+        std::vector<double> sizes(sources.size());
+        for (std::size_t v = 0; v < sizes.size(); ++v)
+            sizes[v] = std::min(space.far_size(), space.term(sources[v], tri.points().data() + 3 * v));
         const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
-            const MeshView view{tri.store(), tri.points(), sizes};
+            const MeshView view{tri.store(), tri.points(), sizes, sources};
             const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
             stats.too_big_left = static_cast<index_t>(faces.size());
             if (faces.empty()) break;
@@ -58,7 +61,10 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 ids[i] = base + static_cast<index_t>(i);
             }
             tri.add_points(xyz, ids);
-            for (const Candidate& c : batch) sizes.push_back(c.h);
+            for (const Candidate& c : batch) {
+                sizes.push_back(c.h);
+                sources.push_back(c.source);
+            }
             for (std::size_t i = 0; i < batch.size(); ++i) tri.set_walk_start(ids[i], batch[i].tet);
             tri.reserve_tets(std::size_t{tri.store().size()} + 8 * batch.size() + 1024);
             const std::size_t blocked_before = tri.blocked().size(), dup_before = tri.duplicates().size();
@@ -82,6 +88,8 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         stats.blocked = k.blocked;
         stats.shrunk_cavities = k.shrunk;
         stats.kernel_conflicts = k.conflicts;
+        stats.exact_insphere = k.exact_insphere;
+        stats.exact_insphere_reused = k.exact_insphere_reused;
         stats.duplicates = tri.duplicates().size();
         domain.tets = tri.finish();
         domain.xyz = tri.take_points();

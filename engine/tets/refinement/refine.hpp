@@ -45,6 +45,8 @@ struct RefineStats {
     std::uint64_t duplicates = 0;
     std::uint64_t shrunk_cavities = 0;    // cavities made star-shaped by shrinking
     std::uint64_t kernel_conflicts = 0;   // kernel insertions postponed between parts
+    std::uint64_t exact_insphere = 0;     // kernel conflict tests the filter left to exact arithmetic
+    std::uint64_t exact_insphere_reused = 0;  // of which answered again within one cavity
     std::uint64_t size_tests = 0;         // tets tested against the size field (each slot once per change)
     std::uint64_t proposals_reused = 0;   // active faces whose ideal point came from an earlier round
     index_t too_big_left = 0;             // active faces when refinement stopped

@@ -709,12 +709,12 @@ TEST(test_tets_optimise, GoodTetsFarFromBadOnesAreLeftAlone) {
     const OptimiseOptions o;
     const std::vector<double> before = d.xyz;
     const Incidence inc = build_incidence(d);
-    // Points whose tets and whose neighbours' tets are all at or above 0.6 (the default smoothing
+    // Points whose tets and whose neighbours' tets are all at or above 0.8 (the default smoothing
     // threshold; every tet is below 1).
     std::vector<std::uint8_t> near_bad(d.point_count(), 0);
     for (index_t t = 0; t < d.tets.size(); ++t) {
         const index_t* v = d.tets.vertex(t);
-        if (collapse_of(d, v[0], v[1], v[2], v[3]) < 0.6)
+        if (collapse_of(d, v[0], v[1], v[2], v[3]) < 0.8)
             for (int i = 0; i < 4; ++i)
                 for (index_t s : inc.of(v[i]))
                     for (int k = 0; k < 4; ++k) near_bad[d.tets.vertex(s)[k]] = 1;

@@ -43,16 +43,17 @@ struct OptimiseOptions {
     // second sweep before the next flips raised the mean less than another pass does.
     int smoothing_sweeps = 1;
     // The smoothing's worklist: the free points of the tets below this collapse (a point whose
-    // tets are all at or above it is not moved). Default 0.6: 1.0 (every free point, as the
-    // optimisation once did) adds 0.0001 to the serpentine lift's mean and 0.010 to the dam
-    // block's (S 0.3) for 1.1 and 5 times the CPU time; 0.5 loses 0.003 of the dam block's
-    // (bench/results/tuning-notes.md).
-    double smoothing_threshold = 0.6;
+    // tets are all at or above it is not moved). Default 0.8: 1.0 (every free point, as the
+    // optimisation once did) adds 0.002 to the dam block's mean (S 0.3) for 4 times the
+    // optimisation's CPU time, 0.6 loses 0.005 of it and 0.004-0.007 on the paper's examples,
+    // where the tet mean bars are (bench/results/tuning-notes.md).
+    double smoothing_threshold = 0.8;
     // A pass that raises the mean collapse by less than this fraction of it ends the passes over
     // the whole worklist; the remaining ones only work near the tets below 0.35 (the minimum's).
-    // Default 0.05: on the serpentine lift the first pass gains 3 %, the next three 0.8, 0.3 and
-    // 0.15 % (0.009 of the mean) for 1.6 times the first one's CPU time.
-    double min_mean_gain = 0.05;
+    // Default 0.02: on the serpentine lift the first pass gains 3 %, the next three 0.8, 0.3 and
+    // 0.15 % (0.009 of the mean) for 1.6 times the first one's CPU time; 0.05 ends paper-ex1's
+    // passes (economy preset) after the first, 0.004 lower.
+    double min_mean_gain = 0.02;
     // Below this collapse, flips and moves raise the smallest collapse of what they change;
     // at or above it they raise the mesh's mean collapse and never make a tet below
     // min(its old worst, mean_floor). Default 0.40: a lower floor raises the mean a little more

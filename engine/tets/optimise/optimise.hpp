@@ -44,9 +44,9 @@ struct OptimiseOptions {
     int smoothing_sweeps = 1;
     // The smoothing's worklist: the free points of the tets below this collapse (a point whose
     // tets are all at or above it is not moved). Default 0.8: 1.0 (every free point, as the
-    // optimisation once did) adds 0.002 to the dam block's mean (S 0.3) for 4 times the
-    // optimisation's CPU time, 0.6 loses 0.005 of it and 0.004-0.007 on the paper's examples,
-    // where the tet mean bars are (bench/results/tuning-notes.md).
+    // optimisation once did) added 0.002 to the dam block's mean at S 0.3 for 0.26 s more CPU
+    // time (the run's 3.57 s); 0.6 lost 0.005 of it, and 0.007-0.010 on paper-ex3 and the
+    // economy paper-ex1, below their tet mean bars (bench/results/tuning-notes.md).
     double smoothing_threshold = 0.8;
     // A pass that raises the mean collapse by less than this fraction of it ends the passes over
     // the whole worklist; the remaining ones only work near the tets below 0.35 (the minimum's).

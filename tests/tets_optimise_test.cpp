@@ -40,7 +40,26 @@ OptimiseStats optimise_on(unsigned threads, TetDomain& d, const OptimiseOptions&
     return optimise(d, o);
 }
 
+// The Delaunay domain of `surface` points on the unit sphere (the front) and the points x, y, z
+// (appended after them).
+TetDomain sphere_domain_with(index_t surface, std::vector<double> x, std::vector<double> y, std::vector<double> z);
+
 TetDomain sphere_domain(index_t surface, index_t inside, unsigned seed) {
+    std::vector<double> x, y, z;
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-0.9, 0.9);
+    while (x.size() < inside) {
+        const double a = u(rng), b = u(rng), c = u(rng);
+        if (a * a + b * b + c * c > 0.81) continue;
+        x.push_back(a);
+        y.push_back(b);
+        z.push_back(c);
+    }
+    return sphere_domain_with(surface, std::move(x), std::move(y), std::move(z));
+}
+
+TetDomain sphere_domain_with(index_t surface, std::vector<double> inner_x, std::vector<double> inner_y,
+                             std::vector<double> inner_z) {
     std::vector<double> x, y, z;
     const double golden = M_PI * (3.0 - std::sqrt(5.0));
     for (index_t i = 0; i < surface; ++i) {
@@ -49,15 +68,9 @@ TetDomain sphere_domain(index_t surface, index_t inside, unsigned seed) {
         y.push_back(r * std::sin(golden * i));
         z.push_back(h);
     }
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-0.9, 0.9);
-    while (x.size() < surface + inside) {
-        const double a = u(rng), b = u(rng), c = u(rng);
-        if (a * a + b * b + c * c > 0.81) continue;
-        x.push_back(a);
-        y.push_back(b);
-        z.push_back(c);
-    }
+    x.insert(x.end(), inner_x.begin(), inner_x.end());
+    y.insert(y.end(), inner_y.begin(), inner_y.end());
+    z.insert(z.end(), inner_z.begin(), inner_z.end());
     auto result = delaunay::delaunay(x, y, z, Parallelism{});
     TetDomain d;
     for (std::size_t i = 0; i < x.size(); ++i) d.xyz.insert(d.xyz.end(), {x[i], y[i], z[i]});
@@ -641,11 +654,11 @@ TEST(test_tets_optimise, PointInsertionFillsItsCavity) {
 
 // A dense front (1000 points on the sphere) over few inner points: the worst tets after the
 // passes have four front points and no flip lifts them. The rescue (its flips, moves and new
-// points) lifts the minimum above what the same passes leave without it: 0.245 -> 0.320 on
-// this seed, with 11 new points. The tet step's 0.30 is checked on the pipeline's fronts (presets
-// and seeded blocks), not on these random spheres: over seeds 1-40 the rescue adds 0 to 0.076,
-// the minima end at 0.283-0.328, and 28 of the 40 take new points (seed 2 takes none since
-// the smoothing's uphill steps got shorter). It keeps
+// points) lifts the minimum above what the same passes leave without it (by more than 0.01).
+// The tet step's 0.30 is checked on the pipeline's fronts (presets and seeded blocks), not on
+// these random spheres, whose minimum moves by a few 0.01 with any change of the passes: this
+// seed ended at 0.320 with 11 new points, 0.295 after the smoothing's shorter uphill steps and
+// 0.279 since the passes work on the tets below the thresholds only. It keeps
 // the domain valid, the front points where they were, and gives the same arrays for 1 and 2
 // threads.
 TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
@@ -663,7 +676,7 @@ TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     EXPECT_GT(s.inserted_points, 0u);
     EXPECT_EQ(one.point_count(), points + s.inserted_points);
     EXPECT_GT(s.min_collapse_after, without.min_collapse_after + 0.01);
-    EXPECT_GE(s.min_collapse_after, 0.295);
+    EXPECT_GE(s.min_collapse_after, 0.275);
     EXPECT_NEAR(s.min_collapse_after, min_collapse(one), 1e-15);
     expect_valid(one);
     EXPECT_EQ(boundary_faces(one), front);
@@ -671,4 +684,50 @@ TEST(test_tets_optimise, RescueInsertsPointsWhereNoFlipLifts) {
     EXPECT_TRUE(std::equal(front_xyz.begin(), front_xyz.end(), one.xyz.begin()));
     EXPECT_EQ(one.xyz, two.xyz);
     EXPECT_TRUE(std::ranges::equal(one.tets.vertices(), two.tets.vertices()));
+}
+
+// The optimisation works on the tets below its thresholds and the points of those tets: a free
+// point deep in good tets (a slightly jittered body-centred cubic lattice, every tet within two
+// rings of it at or above the smoothing threshold) keeps its place, even where moving it would
+// raise the sum of its tets' collapses a little; the poor tets near the front still get better.
+TEST(test_tets_optimise, GoodTetsFarFromBadOnesAreLeftAlone) {
+    std::vector<double> x, y, z;
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> jitter(-0.004, 0.004);
+    const double h = 0.1;
+    for (int i = -9; i <= 9; ++i)
+        for (int j = -9; j <= 9; ++j)
+            for (int k = -9; k <= 9; ++k)
+                for (const double shift : {0.0, 0.5}) {
+                    const double a = (i + shift) * h, b = (j + shift) * h, c = (k + shift) * h;
+                    if (a * a + b * b + c * c > 0.75 * 0.75) continue;
+                    x.push_back(a + jitter(rng));
+                    y.push_back(b + jitter(rng));
+                    z.push_back(c + jitter(rng));
+                }
+    TetDomain d = sphere_domain_with(600, x, y, z);
+    const OptimiseOptions o;
+    const std::vector<double> before = d.xyz;
+    const Incidence inc = build_incidence(d);
+    // Points whose tets and whose neighbours' tets are all at or above 0.8 (the default smoothing
+    // threshold; every tet is below 1).
+    std::vector<std::uint8_t> near_bad(d.point_count(), 0);
+    for (index_t t = 0; t < d.tets.size(); ++t) {
+        const index_t* v = d.tets.vertex(t);
+        if (collapse_of(d, v[0], v[1], v[2], v[3]) < 0.8)
+            for (int i = 0; i < 4; ++i)
+                for (index_t s : inc.of(v[i]))
+                    for (int k = 0; k < 4; ++k) near_bad[d.tets.vertex(s)[k]] = 1;
+    }
+    std::vector<index_t> deep;
+    for (index_t p = d.front_points; p < d.point_count(); ++p)
+        if (!near_bad[p]) deep.push_back(p);
+    ASSERT_GT(deep.size(), 500u);
+    const OptimiseStats s = optimise(d, o);
+    expect_valid(d);
+    EXPECT_GT(s.min_collapse_after, s.min_collapse_before + 0.1);
+    std::size_t moved = 0;
+    for (index_t p : deep)
+        moved += !std::equal(before.begin() + 3 * p, before.begin() + 3 * p + 3, d.xyz.begin() + 3 * p);
+    EXPECT_EQ(moved, 0u) << "of " << deep.size() << " points deep in good tets";
 }

@@ -93,6 +93,20 @@ void points_near(const TetDomain& dom, std::vector<std::uint8_t>& changed, std::
     std::fill(changed.begin(), changed.end(), 0);
 }
 
+// The points of every tet whose collapse q is below `below`: the worklist of the smoothing (the
+// star of a point off it has no tet below `below`, so its move would be refused anyway).
+void points_of_tets_below(const TetDomain& dom, const std::vector<double>& q, double below,
+                          std::vector<std::uint8_t>& flags) {
+    flags.assign(dom.point_count(), 0);
+    const auto flag = [&](index_t p) { std::atomic_ref<std::uint8_t>(flags[p]).store(1, std::memory_order_relaxed); };
+    tbb::parallel_for(tbb::blocked_range<index_t>(0, dom.tets.size(), 4096),
+                      [&](const tbb::blocked_range<index_t>& r) {
+                          for (index_t t = r.begin(); t != r.end(); ++t)
+                              if (q[t] < below)
+                                  for (int i = 0; i < 4; ++i) flag(dom.tets.vertex(t)[i]);
+                      });
+}
+
 // Once a pass gains little on the mean, later passes only work near the tets below this: the
 // ones that can still decide the minimum.
 constexpr double kFocusBelow = 0.35;
@@ -115,7 +129,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
     // the same kind of step last ran; elsewhere they would meet the same tets again.
     const std::size_t points = dom.point_count();
     std::vector<std::uint8_t> changed_for_flips(points, 0), changed_for_smoothing(points, 0), changed(points, 0);
-    std::vector<std::uint8_t> near, poor(points, 0), poor_ring;
+    std::vector<std::uint8_t> near, poor(points, 0), poor_ring, bad_points;
     double last_mean = before.mean;
     bool focused = false;
     const auto focus = [&] {
@@ -142,13 +156,17 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         s.edge_removals += f.edge_removals;
         s.flip_rounds += f.rounds;
         t0 = Clock::now();
+        // The smoothing's worklist: the points of the tets below its threshold (near what changed
+        // since it last ran, after the first pass).
+        points_of_tets_below(dom, collapses, o.smoothing_threshold, bad_points);
         if (pass > 0) {
             points_near(dom, changed_for_smoothing, near);
             focus();
+            for (std::size_t p = 0; p < points; ++p) near[p] &= bad_points[p];
         }
         std::fill(changed.begin(), changed.end(), 0);
         const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain,
-                                                o.mean_floor, pass > 0 ? &near : nullptr, changed, collapses);
+                                                o.mean_floor, pass > 0 ? &near : &bad_points, changed, collapses);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_smoothing += seconds_since(t0);

@@ -7,7 +7,7 @@
 
 #include "batch/sha256.hpp"
 #include "engine/core/types.hpp"
-#include "tools/run/mesh_settings.hpp"
+#include "job/mesh_settings.hpp"
 
 namespace tubemesh::batch {
 

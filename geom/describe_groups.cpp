@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 

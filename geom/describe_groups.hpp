@@ -6,7 +6,7 @@
 // No OpenCASCADE header here.
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/mesh_description.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {

@@ -18,8 +18,8 @@
 #include "geom/builders/presets.hpp"
 #include "python/interrupt.hpp"
 #include "python/mesh_result.hpp"
-#include "tools/run/check_report.hpp"
-#include "tools/run/mesh_settings.hpp"
+#include "job/check_report.hpp"
+#include "job/mesh_settings.hpp"
 
 namespace py = pybind11;
 

@@ -2,7 +2,7 @@
 // Writing a Model as a STEP file (AP214), for `tubemesh make-block` and round-trip tests.
 #include <filesystem>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

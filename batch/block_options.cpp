@@ -7,8 +7,8 @@
 
 #include "batch/sha256.hpp"
 #include "engine/core/types.hpp"
-#include "tools/run/mesh_settings.hpp"
-#include "tools/run/outputs.hpp"
+#include "job/mesh_settings.hpp"
+#include "job/outputs.hpp"
 
 namespace tubemesh::batch {
 

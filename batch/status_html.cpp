@@ -2,8 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/run/html_assets.hpp"
-#include "tools/run/html_report.hpp"
+#include "job/html_assets.hpp"
+#include "job/html_report.hpp"
 
 namespace tubemesh::batch {
 

@@ -1,6 +1,6 @@
 #pragma once
 // `tubemesh batch --status OUTDIR --html FILE`: the catalogue as one self-contained page in the
-// run reports' style (tools/run/html_report.hpp): a summary, elements, tet quality and time per
+// run reports' style (job/html_report.hpp): a summary, elements, tet quality and time per
 // block as bar charts, and the blocks' table with a link to each block's own report where the
 // batch wrote one (format "html").
 #include <string>

@@ -19,9 +19,9 @@
 #include "geom/mesh_file.hpp"
 #include "geom/prepare.hpp"
 #include "geom/working_scale.hpp"
-#include "tools/run/html_report.hpp"
-#include "tools/run/mesh_report.hpp"
-#include "tools/run/outputs.hpp"
+#include "job/html_report.hpp"
+#include "job/mesh_report.hpp"
+#include "job/outputs.hpp"
 
 namespace tubemesh::batch {
 

@@ -11,7 +11,7 @@
 //             "outputs": [{"path", "bytes", "sha256"}], "report", "worker"}
 //
 // A block's files are `<id>.<format>` and `<id>.report.json` in the output folder, written
-// all or none under their final names (tools/run/outputs.hpp).
+// all or none under their final names (job/outputs.hpp).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "geom/face_names.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/face_names.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 

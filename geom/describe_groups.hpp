@@ -1,12 +1,12 @@
 #pragma once
 // The model's side of MeshDescription: the length unit, each surface group's B-rep surface
 // kind, and an alias that says where a face is: its name in the file, or on a built block its
-// side (geom/face_names.hpp).
+// side (geom/model/face_names.hpp).
 //
 // No OpenCASCADE header here.
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/mesh_description.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {

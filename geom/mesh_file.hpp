@@ -29,7 +29,7 @@
 
 #include "engine/pipeline/pipeline.hpp"
 #include "geom/builders/block_spec.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

@@ -10,10 +10,10 @@
 #include "engine/core/timing.hpp"
 #include "geom/sizing/discretize.hpp"
 #include "geom/sizing/gap_sizes.hpp"
-#include "geom/face_properties.hpp"
-#include "geom/tubes/geometry_diagnosis.hpp"
+#include "geom/model/face_properties.hpp"
+#include "geom/sizing/geometry_diagnosis.hpp"
 #include "geom/sizing/sizing_distances.hpp"
-#include "geom/surface_map_occt.hpp"
+#include "geom/model/surface_map_occt.hpp"
 #include "geom/working_scale.hpp"
 
 namespace tubemesh::geom {

@@ -19,7 +19,7 @@
 #include "engine/pipeline/pipeline.hpp"
 #include "geom/sizing/discretize.hpp"
 #include "geom/sizing/element_budget.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/sizing/sizing.hpp"
 #include "geom/tubes/tubes.hpp"
 

@@ -5,27 +5,19 @@
 // millimetres or kilometres lands on the same working model), so a model already in that range
 // (every reference case: diagonals 19.6 to 514) is meshed exactly as given. The Model keeps k;
 // the mesh, its report and every length a user sees are scaled back by 10^k.
-// No OpenCASCADE header here (geom/working_scale_occt.hpp has the shape side).
+// The factor itself: geom/model/scale_factor.hpp. No OpenCASCADE header here.
 #include <optional>
 #include <string>
 
 #include "engine/pipeline/pipeline.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
+#include "geom/model/scale_factor.hpp"
 #include "geom/sizing/sizing.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {
 
 struct MeshRun;
-
-// k, a multiple of 3, with diagonal / 10^k in [1, 1000); 0 for a diagonal that is not a
-// positive finite number.
-int working_scale_exponent(double diagonal);
-
-// length · 10^-k (into the working space) and length · 10^k (back), each one correctly
-// rounded operation with the exact power 10^|k|.
-double to_working(double length, int k);
-double from_working(double length, int k);
 
 // The model at working scale when it is not yet there (a built block or a model made in
 // memory), with Model::scale_exponent the sum of both; nullopt when it already is.

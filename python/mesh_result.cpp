@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "engine/io/mesh_io.hpp"
-#include "tools/run/html_report.hpp"
-#include "tools/run/mesh_report.hpp"
-#include "tools/run/outputs.hpp"
-#include "tools/run/quality_measures.hpp"
+#include "job/html_report.hpp"
+#include "job/mesh_report.hpp"
+#include "job/outputs.hpp"
+#include "job/quality_measures.hpp"
 
 namespace tubemesh::python {
 

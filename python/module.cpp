@@ -1,6 +1,6 @@
 // The Python module `tubemesh`: mesh(), check(), make_block(), presets() and the Mesh result
 // (mesh_result.hpp). Options, defaults, messages and reports are the CLI's own
-// (tools/run/), so `tubemesh.mesh(...)` and `tubemesh mesh ...` take the same values and
+// (job/), so `tubemesh.mesh(...)` and `tubemesh mesh ...` take the same values and
 // refuse the same ones. Errors raise tubemesh.Error (a RuntimeError) with the CLI's one-line
 // message; the GIL is released while meshing and checking; Ctrl-C stops a run (interrupt.hpp).
 #include <pybind11/pybind11.h>
@@ -18,8 +18,8 @@
 #include "geom/builders/presets.hpp"
 #include "python/interrupt.hpp"
 #include "python/mesh_result.hpp"
-#include "tools/run/check_report.hpp"
-#include "tools/run/mesh_settings.hpp"
+#include "job/check_report.hpp"
+#include "job/mesh_settings.hpp"
 
 namespace py = pybind11;
 

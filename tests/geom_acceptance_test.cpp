@@ -34,7 +34,7 @@
 #include "geom/builders/spec_json.hpp"
 #include "geom/sizing/discretize.hpp"
 #include "geom/import/import.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/step_write.hpp"
 
 namespace tubemesh::geom {

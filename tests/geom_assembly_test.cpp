@@ -17,7 +17,7 @@
 #include "geom/assembly/assembly_occt.hpp"
 #include "geom/assembly/mesh_assembly.hpp"
 #include "geom/builders/block_builder.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/step_write_occt.hpp"
 #include "tests/support/error_of.hpp"
 

@@ -24,7 +24,7 @@
 #include "geom/builders/serpentine.hpp"
 #include "geom/builders/spec_json.hpp"
 #include "geom/import/import.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/solid_check.hpp"
 #include "tests/support/error_of.hpp"
 

@@ -23,7 +23,7 @@
 #include "geom/sizing/discretize.hpp"
 #include "geom/sizing/discretize_edges.hpp"
 #include "tests/support/geom_tubes_solids.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh {
 namespace {

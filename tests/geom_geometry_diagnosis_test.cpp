@@ -1,4 +1,4 @@
-// The clearance diagnosis's messages (geom/tubes/geometry_diagnosis.hpp) on measured distances
+// The clearance diagnosis's messages (geom/sizing/geometry_diagnosis.hpp) on measured distances
 // as OpenCASCADE gives them: walls that touch measure a few 1e-13 either side of zero, and a
 // message says 0, never a negative distance or thickness.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "geom/tubes/geometry_diagnosis.hpp"
+#include "geom/sizing/geometry_diagnosis.hpp"
 #include "tests/support/error_of.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/types.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/sizing/sizing.hpp"
 #include "tests/support/geom_tubes_solids.hpp"
 

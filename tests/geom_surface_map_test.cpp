@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "engine/core/types.hpp"
-#include "geom/surface_map_occt.hpp"
+#include "geom/model/surface_map_occt.hpp"
 #include "geom/tubes/tubes.hpp"
 #include "tests/support/geom_tubes_solids.hpp"
 

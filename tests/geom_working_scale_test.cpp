@@ -16,7 +16,7 @@
 #include "geom/import/import.hpp"
 #include "geom/import/step_write_occt.hpp"
 #include "geom/mesh_file.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/working_scale.hpp"
 
 namespace tubemesh::geom {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "engine/core/types.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "geom/builders/spec_json.hpp"
 #include "geom/mesh_file.hpp"
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "engine/check/mesh_check.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/pipeline/pipeline.hpp"
 #include "engine/quality/quality.hpp"
 #include "geom/builders/block_builder.hpp"

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/pyramids/build_pyramids.hpp"
 #include "engine/quality/quality.hpp"

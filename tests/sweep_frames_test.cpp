@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "engine/core/types.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/sweep/frames.hpp"
 
 namespace {

@@ -18,11 +18,11 @@
 #include "engine/delaunay/delaunay.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/tets/optimise/optimise.hpp"
-#include "engine/tets/point_colouring.hpp"
+#include "engine/tets/domain/point_colouring.hpp"
 #include "engine/tets/optimise/point_insertion.hpp"
 #include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 
 namespace {

@@ -16,7 +16,7 @@
 #include "engine/delaunay/triangulation.hpp"
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/tets/refinement/control_space.hpp"

@@ -11,12 +11,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/tets/refinement/control_space.hpp"
 #include "engine/tets/refinement/odt_relaxation.hpp"
 #include "engine/tets/refinement/refine.hpp"
 #include "engine/tets/optimise/smoothing.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_checks.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 

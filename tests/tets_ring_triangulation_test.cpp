@@ -1,4 +1,4 @@
-// The ring triangulation search shared by both edge removals (engine/tets/ring_triangulation.hpp)
+// The ring triangulation search shared by both edge removals (engine/tets/domain/ring_triangulation.hpp)
 // against brute force: every triangulation of small polygons with random triangle scores and
 // random forbidden chords.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <set>
 #include <vector>
 
-#include "engine/tets/ring_triangulation.hpp"
+#include "engine/tets/domain/ring_triangulation.hpp"
 
 namespace tubemesh::tets {
 namespace {

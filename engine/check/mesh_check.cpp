@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 // How the check works. Every cell face becomes a record: its node ids sorted (the key), the
 // face's slot (which cell and local face, see FaceSlots) and its form (how the face's cycle runs

@@ -8,7 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/delaunay/triangulation_internal.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 
 namespace tubemesh::delaunay {

@@ -1,7 +1,7 @@
 #pragma once
 // A B-rep face's parametrisation as the engine sees it: uv -> xyz with derivatives, xyz -> uv
 // projection, its parameter ranges and its trimming loops. geom/ implements it over
-// OpenCASCADE (geom/surface_map_occt.hpp); engine tests can implement it analytically.
+// OpenCASCADE (geom/model/surface_map_occt.hpp); engine tests can implement it analytically.
 //
 // Every const member must be safe to call from several threads at once: the engine meshes
 // faces in parallel and may project into one face from several tasks.

@@ -13,7 +13,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/topology.hpp"
-#include "engine/mesh/vec3.hpp"
+#include "engine/core/vec3.hpp"
 
 namespace tubemesh {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/core/types.hpp"
-#include "engine/mesh/vec3.hpp"
+#include "engine/core/vec3.hpp"
 
 namespace tubemesh {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh {
 

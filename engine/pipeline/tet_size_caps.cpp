@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh {
 

@@ -15,7 +15,7 @@
 // predicates_inline.hpp has the same two with the filter inlined, for inner loops.
 #include <cstdint>
 
-#include "engine/mesh/vec3.hpp"
+#include "engine/core/vec3.hpp"
 
 namespace tubemesh::predicates {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 
 namespace tubemesh::pyramids {

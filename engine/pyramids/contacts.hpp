@@ -6,7 +6,7 @@
 #include <array>
 
 #include "engine/core/types.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/pyramids/geometry.hpp"
 #include "engine/pyramids/new_pyramid.hpp"
 
@@ -34,7 +34,7 @@ public:
         const Vec3 ab = b - a, ac = c - a;
         n_ = cross(ab, ac);
         const double bb = norm2(ab), cc = norm2(ac);
-        usable_ = in_range(bb) & in_range(cc);
+        usable_ = in_range(bb) && in_range(cc);
         k_ = kMargin2 * bb * cc;
     }
     bool surely_off(const Vec3& s, const Vec3& x) const {
@@ -45,7 +45,7 @@ public:
 
 private:
     static constexpr double kMargin2 = 1e-18;
-    static bool in_range(double l2) { return (l2 >= 1e-150) & (l2 <= 1e150); }
+    static bool in_range(double l2) { return l2 >= 1e-150 && l2 <= 1e150; }
     Vec3 n_;
     double k_;
     bool usable_;

@@ -1,6 +1,6 @@
 #pragma once
 // The distances the suitability criteria measure (point-triangle here; segment-segment and
-// the Vec3 arithmetic in engine/mesh/vec3_ops.hpp), plus axis-aligned boxes used to skip far-away pairs
+// the Vec3 arithmetic in engine/core/vec3_ops.hpp), plus axis-aligned boxes used to skip far-away pairs
 // before any distance or exact test. Inline: they run in the innermost loops.
 //
 // These are *measurements* in double, compared against thresholds of the order of h: a
@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/mesh/vec3_ops.hpp"  // Vec3 arithmetic, segment_segment_distance2
+#include "engine/core/vec3_ops.hpp"  // Vec3 arithmetic, segment_segment_distance2
 
 namespace tubemesh::pyramids {
 

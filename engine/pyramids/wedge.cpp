@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "engine/mesh/edge_key.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh::pyramids {
 

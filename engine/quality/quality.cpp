@@ -1,5 +1,5 @@
 #include "engine/quality/quality.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/quality/standard_measures.hpp"
 
 #include <tbb/blocked_range.h>

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "engine/mesh/hybrid_mesh.hpp"
-#include "engine/mesh/vec3_ops.hpp"
-#include "engine/mesh/vec3_pair.hpp"
+#include "engine/core/vec3_ops.hpp"
+#include "engine/core/vec3_pair.hpp"
 
 namespace tubemesh {
 

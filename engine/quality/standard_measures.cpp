@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/quality/quality.hpp"
 
 namespace tubemesh {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "engine/mesh/point_index.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh {
 

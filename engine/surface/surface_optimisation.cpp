@@ -1,5 +1,5 @@
 #include "engine/surface/surface_optimisation.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 #include <algorithm>
 #include <cmath>

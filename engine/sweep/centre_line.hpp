@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "engine/geometry/tube_data.hpp"
-#include "engine/mesh/vec3.hpp"
+#include "engine/core/vec3.hpp"
 
 namespace tubemesh::sweep {
 

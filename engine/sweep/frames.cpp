@@ -4,7 +4,7 @@
 #include <string>
 
 #include "engine/core/types.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh {
 

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/mesh/vec3.hpp"
+#include "engine/core/vec3.hpp"
 
 namespace tubemesh {
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/sweep/ring_cells.hpp"
 
 namespace tubemesh::sweep {

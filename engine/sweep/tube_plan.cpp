@@ -6,7 +6,7 @@
 #include <string>
 
 #include "engine/core/types.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/sweep/frames.hpp"
 #include "engine/sweep/ring_dimensions.hpp"
 #include "engine/sweep/ring_room.hpp"

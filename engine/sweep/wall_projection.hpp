@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
-#include "engine/mesh/vec3.hpp"
+#include "engine/core/vec3.hpp"
 
 namespace tubemesh::sweep {
 

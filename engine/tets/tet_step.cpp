@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/core/timing.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh::tets {
 namespace {

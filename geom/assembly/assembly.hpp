@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

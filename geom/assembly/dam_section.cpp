@@ -11,7 +11,7 @@
 
 #include "geom/assembly/assembly_occt.hpp"
 #include "geom/builders/block_builder.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/step_write_occt.hpp"
 
 namespace tubemesh::geom {

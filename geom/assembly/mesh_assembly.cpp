@@ -12,13 +12,13 @@
 #include <unordered_set>
 
 #include "engine/pipeline/stage_check.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "geom/assembly/assembly_occt.hpp"
 #include "geom/assembly/solid_tops.hpp"
 #include "geom/describe_groups.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/prepare.hpp"
-#include "geom/surface_map_occt.hpp"
+#include "geom/model/surface_map_occt.hpp"
 
 namespace tubemesh::geom {
 

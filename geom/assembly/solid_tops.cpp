@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "geom/face_names.hpp"
+#include "geom/model/face_names.hpp"
 
 namespace tubemesh::geom {
 

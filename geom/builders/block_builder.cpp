@@ -23,7 +23,7 @@
 #include "geom/builders/clearance.hpp"
 #include "geom/builders/host_geometry.hpp"
 #include "geom/builders/pipe_sweep.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/solid_check.hpp"
 
 namespace tubemesh::geom {

@@ -1,7 +1,7 @@
 #pragma once
 // Building the solid a BlockSpec describes: host minus swept pipes, checked like an import.
 #include "geom/builders/block_spec.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

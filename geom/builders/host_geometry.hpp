@@ -3,7 +3,7 @@
 // normals, used to place pipes and check their clearances without OpenCASCADE.
 #include <optional>
 
-#include "engine/mesh/vec3_ops.hpp"  // Vec3 arithmetic shared with the engine
+#include "engine/core/vec3_ops.hpp"  // Vec3 arithmetic shared with the engine
 #include "geom/builders/block_spec.hpp"
 
 namespace tubemesh::geom {

@@ -31,8 +31,8 @@
 #include "engine/io/file_bytes.hpp"
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/xstep_state.hpp"
-#include "geom/working_scale.hpp"
-#include "geom/working_scale_occt.hpp"
+#include "geom/model/scale_factor.hpp"
+#include "geom/model/scale_factor_occt.hpp"
 
 namespace tubemesh::geom {
 

@@ -21,7 +21,7 @@
 #include "engine/core/types.hpp"
 #include "geom/import/cad_readers.hpp"
 #include "geom/import/heal.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/solid_check.hpp"
 
 namespace tubemesh::geom {

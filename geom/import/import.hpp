@@ -2,7 +2,7 @@
 // Importing a CAD file: the one solid tubemesh meshes, checked and safely healed.
 #include <filesystem>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

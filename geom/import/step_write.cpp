@@ -26,12 +26,12 @@
 
 #include "engine/core/types.hpp"
 #include "engine/io/atomic_file.hpp"
-#include "geom/face_names.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/face_names.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/occt_messages.hpp"
 #include "geom/import/step_write_occt.hpp"
 #include "geom/import/xstep_state.hpp"
-#include "geom/working_scale_occt.hpp"
+#include "geom/model/scale_factor_occt.hpp"
 
 namespace tubemesh::geom {
 

@@ -2,7 +2,7 @@
 // Writing a Model as a STEP file (AP214), for `tubemesh make-block` and round-trip tests.
 #include <filesystem>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 
@@ -10,7 +10,7 @@ namespace tubemesh::geom {
 // labelled with the model's length unit when STEP has a name for it (millimetre, metre,
 // centimetre, inch, foot, ...), else millimetre, and
 // named with the model's name when it has one (import reads it back into ImportReport::name),
-// its faces with their names (geom/face_names.hpp: a built block's top, bottom, ...; import reads
+// its faces with their names (geom/model/face_names.hpp: a built block's top, bottom, ...; import reads
 // them back into ImportReport::face_names).
 // The file appears under `path` only when complete: it is written to a temporary name in the
 // same directory and renamed. Throws tubemesh::Error when the directory is not writable or

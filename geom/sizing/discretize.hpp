@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "engine/geometry/tube_data.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/sizing/sizing.hpp"
 #include "geom/tubes/tubes.hpp"
 

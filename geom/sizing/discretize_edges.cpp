@@ -16,7 +16,7 @@
 #include <cmath>
 
 #include "engine/core/types.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {

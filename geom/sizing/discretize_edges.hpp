@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/geometry/tube_data.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <memory>
 
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "engine/surface/size_field.hpp"
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/sizing/sizing_distances.hpp"
 
 namespace tubemesh::geom {

@@ -13,8 +13,8 @@
 #include <numbers>
 #include <set>
 
-#include "engine/mesh/vec3_ops.hpp"
-#include "geom/model_occt.hpp"
+#include "engine/core/vec3_ops.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/sizing/sizing.hpp"
 
 namespace tubemesh::geom {

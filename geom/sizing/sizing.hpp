@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {

@@ -18,8 +18,8 @@
 #include <cmath>
 #include <set>
 
-#include "engine/mesh/vec3_ops.hpp"
-#include "geom/model_occt.hpp"
+#include "engine/core/vec3_ops.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {

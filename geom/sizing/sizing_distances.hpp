@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {

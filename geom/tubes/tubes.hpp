@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::geom {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {

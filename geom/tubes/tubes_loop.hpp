@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/tubes/tubes_topology.hpp"
 
 namespace tubemesh::geom {

@@ -17,7 +17,7 @@
 #include <sstream>
 
 #include "engine/core/types.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {

@@ -14,7 +14,7 @@
 #include <set>
 #include <sstream>
 
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::geom {
 namespace {

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "geom/builders/block_builder.hpp"
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 #include "geom/import/step_write_occt.hpp"
 #include "tests/support/cli_command.hpp"
 #include "tests/support/outside_readers.hpp"

@@ -1,4 +1,4 @@
-// Geometry the hex rings cannot mesh is diagnosed before meshing (geom/tubes/geometry_diagnosis.hpp):
+// Geometry the hex rings cannot mesh is diagnosed before meshing (geom/sizing/geometry_diagnosis.hpp):
 // one line naming the faces or pipes and what to change, exit 2, no file, and no time spent
 // meshing. The solids come from block specs with the builder's clearance checks off.
 #include <gtest/gtest.h>

@@ -31,7 +31,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "geom/model_occt.hpp"
+#include "geom/model/model_occt.hpp"
 
 namespace tubemesh::test {
 namespace {

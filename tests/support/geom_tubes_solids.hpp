@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "geom/model.hpp"
+#include "geom/model/model.hpp"
 
 namespace tubemesh::test {
 

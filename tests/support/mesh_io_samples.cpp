@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh::testing {
 

@@ -13,12 +13,12 @@
 #include <sstream>
 #include <utility>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/surface/size_field.hpp"
 #include "geom/builders/block_builder.hpp"
-#include "geom/face_properties.hpp"
+#include "geom/model/face_properties.hpp"
 #include "tests/support/sweep_checks.hpp"
 
 namespace tubemesh::acceptance {

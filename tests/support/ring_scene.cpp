@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh::testing {
 

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh::testing {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 
 namespace tubemesh::testing {
 

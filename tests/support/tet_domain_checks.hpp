@@ -1,9 +1,9 @@
 #pragma once
-// Fixtures and checks shared by the tet-step tests on TetDomains (engine/tets/tet_domain.hpp).
+// Fixtures and checks shared by the tet-step tests on TetDomains (engine/tets/domain/tet_domain.hpp).
 #include <vector>
 
 #include "engine/core/types.hpp"
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::testing {
 

@@ -1,9 +1,9 @@
 #pragma once
-// Sum of the signed volumes of a TetDomain's tets (engine/tets/tet_domain.hpp), for the tests
+// Sum of the signed volumes of a TetDomain's tets (engine/tets/domain/tet_domain.hpp), for the tests
 // that check a tet-step phase keeps the region it fills.
-#include "engine/mesh/vec3_ops.hpp"
-#include "engine/tets/tet_domain.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/core/vec3_ops.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::testing {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "engine/mesh/topology.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
 #include "geom/builders/block_builder.hpp"

@@ -20,7 +20,7 @@
 #include "batch/run_lock.hpp"
 #include "batch/status.hpp"
 #include "batch/status_html.hpp"
-#include "tools/run/outputs.hpp"
+#include "job/outputs.hpp"
 #include "batch/worker.hpp"
 #include "engine/core/types.hpp"
 #include "tools/cli/commands.hpp"

@@ -8,8 +8,8 @@
 #include "engine/io/mesh_io.hpp"
 #include "engine/quality/quality.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/run/check_report.hpp"
-#include "tools/run/quality_table.hpp"
+#include "job/check_report.hpp"
+#include "job/quality_table.hpp"
 
 namespace tubemesh::cli {
 

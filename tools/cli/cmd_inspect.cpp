@@ -11,12 +11,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "geom/sizing/element_budget.hpp"
 #include "geom/import/import.hpp"
 #include "geom/prepare.hpp"
 #include "geom/sizing/sizing.hpp"
-#include "geom/surface_map_occt.hpp"
+#include "geom/model/surface_map_occt.hpp"
 #include "geom/tubes/tubes.hpp"
 #include "geom/working_scale.hpp"
 #include "tools/cli/commands.hpp"

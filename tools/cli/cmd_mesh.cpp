@@ -31,12 +31,12 @@
 #include "tools/cli/memory_limit.hpp"
 #include "tools/cli/option_checks.hpp"
 #include "tools/cli/progress_line.hpp"
-#include "tools/run/assembly_report.hpp"
-#include "tools/run/process_memory.hpp"
-#include "tools/run/html_report.hpp"
-#include "tools/run/mesh_report.hpp"
-#include "tools/run/mesh_settings.hpp"
-#include "tools/run/outputs.hpp"
+#include "job/assembly_report.hpp"
+#include "job/process_memory.hpp"
+#include "job/html_report.hpp"
+#include "job/mesh_report.hpp"
+#include "job/mesh_settings.hpp"
+#include "job/outputs.hpp"
 
 namespace tubemesh::cli {
 

@@ -9,9 +9,9 @@
 
 #include "engine/core/types.hpp"
 #include "engine/io/temporary_files.hpp"
-#include "geom/occt_info.hpp"
+#include "geom/model/occt_info.hpp"
 #include "tools/cli/commands.hpp"
-#include "tools/run/process_memory.hpp"
+#include "job/process_memory.hpp"
 
 int main(int argc, char** argv) {
     namespace cli = tubemesh::cli;

@@ -17,7 +17,7 @@
 #include "batch/worker.hpp"
 #include "engine/core/types.hpp"
 #include "tools/mpi/mpi_executor.hpp"
-#include "tools/run/process_memory.hpp"
+#include "job/process_memory.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "engine/tets/optimise/tet_flips.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 

@@ -13,7 +13,7 @@
 #include "engine/tets/optimise/flip_pass.hpp"
 #include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 #include "engine/tets/optimise/worst_tet_rescue.hpp"
 
 namespace tubemesh::tets {

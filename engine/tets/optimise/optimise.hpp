@@ -17,7 +17,7 @@
 // Points are only ever added (by the rescue, after the passes), never removed.
 #include <cstdint>
 
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
 

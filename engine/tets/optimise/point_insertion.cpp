@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "engine/predicates/predicates_inline.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 

@@ -15,7 +15,7 @@
 // gets x as its new apex); a front face x does not see means x is outside the region there,
 // and the insertion is refused.
 #include "engine/mesh/hybrid_mesh.hpp"
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
 
 namespace tubemesh::tets {

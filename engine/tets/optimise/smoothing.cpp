@@ -11,13 +11,13 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "engine/mesh/vec3_ops.hpp"
-#include "engine/mesh/vec3_pair.hpp"
-#include "engine/mesh/vec3_quad.hpp"
+#include "engine/core/vec3_ops.hpp"
+#include "engine/core/vec3_pair.hpp"
+#include "engine/core/vec3_quad.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 #include "engine/quality/quality.hpp"
-#include "engine/tets/point_colouring.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/point_colouring.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 

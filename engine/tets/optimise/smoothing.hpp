@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "engine/mesh/hybrid_mesh.hpp"
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
 

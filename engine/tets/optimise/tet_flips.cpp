@@ -6,7 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "engine/tets/ring_triangulation.hpp"
+#include "engine/tets/domain/ring_triangulation.hpp"
 
 namespace tubemesh::tets {
 

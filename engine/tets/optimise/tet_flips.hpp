@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "engine/core/types.hpp"
-#include "engine/tets/tet_domain.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 

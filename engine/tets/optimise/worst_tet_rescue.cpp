@@ -8,7 +8,7 @@
 #include "engine/tets/optimise/point_insertion.hpp"
 #include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
 

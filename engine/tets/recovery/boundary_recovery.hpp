@@ -20,7 +20,7 @@
 
 #include "engine/core/parallelism.hpp"
 #include "engine/core/types.hpp"
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
 

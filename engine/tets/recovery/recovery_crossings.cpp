@@ -6,7 +6,7 @@
 #include <unordered_set>
 
 #include "engine/mesh/edge_key.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/predicates/predicates.hpp"
 

@@ -5,10 +5,10 @@
 
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/mesh/topology.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
-#include "engine/tets/ring_triangulation.hpp"
+#include "engine/tets/domain/ring_triangulation.hpp"
 
 namespace tubemesh::tets {
 

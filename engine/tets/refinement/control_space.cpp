@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/tets/tet_domain.hpp"
+#include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
 

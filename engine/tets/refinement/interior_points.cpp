@@ -12,7 +12,7 @@
 
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
-#include "engine/mesh/vec3_ops.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
 #include "engine/tets/refinement/control_space.hpp"
 

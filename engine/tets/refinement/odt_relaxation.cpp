@@ -9,9 +9,9 @@
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
-#include "engine/tets/point_colouring.hpp"  // build_incidence
+#include "engine/tets/domain/point_colouring.hpp"  // build_incidence
 #include "engine/tets/optimise/smoothing.hpp"
-#include "engine/tets/tet_neighbourhood.hpp"
+#include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {
 namespace {

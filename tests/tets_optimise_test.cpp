@@ -20,6 +20,7 @@
 #include "engine/tets/optimise/optimise.hpp"
 #include "engine/tets/domain/point_colouring.hpp"
 #include "engine/tets/optimise/point_insertion.hpp"
+#include "engine/tets/domain/star_kernels.hpp"
 #include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
 #include "engine/tets/domain/tet_neighbourhood.hpp"

@@ -15,7 +15,7 @@
 #include "engine/tets/refinement/control_space.hpp"
 #include "engine/tets/refinement/odt_relaxation.hpp"
 #include "engine/tets/refinement/refine.hpp"
-#include "engine/tets/optimise/smoothing.hpp"
+#include "engine/tets/domain/star_kernels.hpp"
 #include "engine/tets/domain/tet_neighbourhood.hpp"
 #include "tests/support/tet_domain_checks.hpp"
 #include "tests/support/tet_domain_volume.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/tets/optimise/point_insertion.hpp"
-#include "engine/tets/optimise/smoothing.hpp"
+#include "engine/tets/domain/star_kernels.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
 #include "engine/tets/domain/tet_neighbourhood.hpp"
 

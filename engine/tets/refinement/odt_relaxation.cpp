@@ -10,7 +10,7 @@
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
 #include "engine/tets/domain/point_colouring.hpp"  // build_incidence
-#include "engine/tets/optimise/smoothing.hpp"
+#include "engine/tets/domain/star_kernels.hpp"
 #include "engine/tets/domain/tet_neighbourhood.hpp"
 
 namespace tubemesh::tets {

@@ -10,6 +10,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "engine/delaunay/delaunay.hpp"
@@ -442,6 +443,38 @@ TEST(Refine, CarriedSizesFollowTheControlSpace) {
     }
     std::printf("carried h over the control space's: at most %.3f\n", worst);
     EXPECT_LT(worst, 1.35);
+}
+
+// The refinement gives a sign of life at the start of every round (engine/core/pulse.hpp), on the
+// calling thread, and the same mesh with or without a listener.
+TEST(Refine, PulsesEveryRoundWithoutChangingTheMesh) {
+    const auto run = [](const Pulse& pulse, RefineStats& stats) {
+        TetDomain d = l_domain();
+        ControlSpaceOptions co;
+        co.far_size = 0.6;
+        const ControlSpace cs(d, co);
+        const Parallelism par{2, 2};
+        const auto limit = limit_threads(par);
+        stats = refine_interior(d, cs, par, {}, nullptr, pulse);
+        return d;
+    };
+    unsigned beats = 0;
+    const auto caller = std::this_thread::get_id();
+    bool on_caller = true;
+    RefineStats with, without;
+    const TetDomain a = run(
+        [&] {
+            ++beats;
+            on_caller = on_caller && std::this_thread::get_id() == caller;
+        },
+        with);
+    const TetDomain b = run({}, without);
+    ASSERT_GT(with.rounds, 2u);
+    // A round that finds nothing left to refine ends the loop after its pulse.
+    EXPECT_GE(beats, with.rounds);
+    EXPECT_LE(beats, with.rounds + 1u);
+    EXPECT_TRUE(on_caller);
+    EXPECT_EQ(a.xyz, b.xyz);
 }
 
 // point_sizes is the control space's h at each point, and tet_too_big compares a tet's mean

@@ -185,3 +185,22 @@ TEST(Relaxation, NoIterationsLeavesTheDomainAndBadInputThrows) {
 }
 
 }  // namespace
+
+// The relaxation gives a sign of life before each half of every iteration (moves, then the
+// insertion again), and a listener that throws stops it: how Ctrl-C reaches a long tet step.
+TEST(Relaxation, PulsesEveryHalfIterationAndStopsWhenTheListenerThrows) {
+    Refined r = refined_cube();
+    int beats = 0;
+    const RelaxationStats s = relax_points(r.domain, r.recovered, r.sizes, Parallelism{2, 2}, {}, [&] { ++beats; });
+    EXPECT_EQ(beats, 2 * s.iterations);
+
+    Refined again = refined_cube();
+    struct Stop {};
+    int calls = 0;
+    EXPECT_THROW(relax_points(again.domain, again.recovered, again.sizes, Parallelism{2, 2}, {},
+                              [&] {
+                                  if (++calls == 2) throw Stop{};
+                              }),
+                 Stop);
+    EXPECT_EQ(calls, 2);
+}

@@ -264,6 +264,7 @@ void run_tets(const PipelineInput& in, const MeshOptions& opt, const Parallelism
     tets::TetStepOptions to = opt.tets;
     to.far_size = tet_far_size(in, opt);
     to.part_done = [&progress] { progress.advance(); };
+    to.pulse = [&progress] { progress.pulse(); };
     // The refinement is where a run's memory grows most: the cap is checked after each round.
     if (std::isfinite(in.cap.limit))
         to.refine.round_done = [&](index_t tets) { check_refining_tets(out.mesh, double(tets), in.cap); };

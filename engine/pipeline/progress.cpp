@@ -19,6 +19,17 @@ void PhaseProgress::advance(std::uint64_t items) {
     report(done_.load(std::memory_order_relaxed));
 }
 
+void PhaseProgress::pulse() {
+    // Often enough for a progress line and a Ctrl-C answered within half a second, rarely
+    // enough that a terminal is not redrawn for every batch of a part.
+    constexpr double kPulseSeconds = 0.1;
+    if (!callback_) return;
+    std::unique_lock lock(mutex_, std::try_to_lock);
+    if (!lock.owns_lock() || finished_ || seconds_since(last_report_) < kPulseSeconds) return;
+    last_report_ = Clock::now();
+    callback_(ProgressEvent{phase_, reported_, total_});
+}
+
 void PhaseProgress::finish() {
     if (!callback_) return;
     std::lock_guard lock(mutex_);
@@ -36,6 +47,7 @@ void PhaseProgress::report(std::uint64_t done) {
     if (total_ > 0) done = std::min(done, total_);
     if (finished_ || done <= reported_) return;
     reported_ = done;
+    last_report_ = Clock::now();
     callback_(ProgressEvent{phase_, done, total_});
 }
 

@@ -7,13 +7,15 @@
 //
 // PhaseProgress is what a phase uses from parallel code: advance() is a relaxed atomic add
 // and, at most about 100 times per phase, a try-lock; the callback is never called by two
-// threads at once and the `done` values it sees only grow.
+// threads at once and the `done` values it sees never shrink (a pulse repeats the last one).
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <mutex>
 #include <string>
 #include <string_view>
+
+#include "engine/core/timing.hpp"
 
 namespace tubemesh {
 
@@ -38,6 +40,9 @@ public:
     // Thread-safe. Reports when the count crosses the next 1% step and no other thread is
     // reporting right now (a skipped report is covered by a later one or by finish()).
     void advance(std::uint64_t items = 1);
+    // Reports the count so far again (the calling thread's sign of life inside a long part of a
+    // phase, engine/core/pulse.hpp), at most ten times a second; done does not change.
+    void pulse();
     // Reports total of total, unless advance() already did: a listener sees it once. Later
     // calls do nothing. Not called on failure, so a listener never sees a phase that threw as
     // complete.
@@ -53,6 +58,7 @@ private:
     std::atomic<std::uint64_t> done_{0};
     std::mutex mutex_;
     std::uint64_t reported_ = 0;  // guarded by mutex_
+    Clock::time_point last_report_ = Clock::now();  // guarded by mutex_
     bool finished_ = false;       // guarded by mutex_
 };
 

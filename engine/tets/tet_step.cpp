@@ -157,14 +157,15 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
 
     std::vector<double> sizes;
     stats.refine =
-        refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr);
+        refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr,
+                        options.pulse);
     if (options.relaxation.iterations > 0) {
-        stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation);
+        stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation, options.pulse);
         recovered = RecoveredTets();
     }
     if (options.part_done) options.part_done();  // refinement and relaxation
 
-    stats.optimise = optimise(domain, options.optimise);
+    stats.optimise = optimise(domain, options.optimise, options.pulse);
     if (options.part_done) options.part_done();
 
     // Apexes and surface points the smoothing moved: their new places.

@@ -14,6 +14,7 @@
 #include <span>
 
 #include "engine/core/parallelism.hpp"
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/tets/recovery/boundary_recovery.hpp"
@@ -53,6 +54,8 @@ struct TetStepOptions {
     // Called after each of the three parts (recovery, refinement with the relaxation,
     // optimisation), for progress reports; may be empty. The mesh does not depend on it.
     std::function<void()> part_done;
+    // Called between the steps of each part (engine/core/pulse.hpp); may be empty.
+    Pulse pulse;
 };
 
 struct TetStepStats {

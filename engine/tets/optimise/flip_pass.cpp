@@ -218,7 +218,7 @@ void grow(std::vector<T>& v, std::size_t n, T value) {
 
 FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
                            double mean_floor, const std::vector<std::uint8_t>* active,
-                           std::vector<std::uint8_t>& changed, std::vector<double>* collapses) {
+                           std::vector<std::uint8_t>& changed, std::vector<double>* collapses, const Pulse& pulse) {
     FlipSweepCounts counts;
     // The collapse of every slot, kept up to date as flips write slots: planning reads the old
     // tets' collapses from it (points do not move during the sweep).
@@ -246,6 +246,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
     const index_t spare_per_move = static_cast<index_t>(max_extra_slots(max_edge_ring));
 
     while (!pending.empty()) {
+        beat(pulse);
         ++counts.rounds;
         const auto stamp = static_cast<std::uint32_t>(counts.rounds);
         grow(written, dom.tets.size(), std::uint32_t{0});
@@ -254,8 +255,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         // vertex rows and collapses alone (points do not move in a sweep, and applying reads
         // the cavity's outside as it is then). A flip beside it may have made another plan
         // better; keeping the one it has instead of planning again halved the sweep's
-        // plannings (serpentine lift, first pass: 277k -> 135k, 0.50 -> 0.24 s at 2 threads)
-        // and moved the mean collapse by -0.0014 to +0.0004 on the reference cases.
+        // plannings and hardly moved the mean (bench/results/tuning-notes.md).
         const double* slot_collapse = q.data();
         for_each_index(pending.size(), [&](std::size_t i) {
             Candidate& c = cands[pending[i]];

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/core/pulse.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
@@ -35,6 +36,7 @@ struct FlipSweepCounts {
 // here), on return the collapse of every tet of the result. Leaves no free slots.
 FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
                            double mean_floor, const std::vector<std::uint8_t>* active,
-                           std::vector<std::uint8_t>& changed, std::vector<double>* collapses = nullptr);
+                           std::vector<std::uint8_t>& changed, std::vector<double>* collapses = nullptr,
+                           const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

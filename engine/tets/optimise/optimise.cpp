@@ -114,7 +114,7 @@ constexpr double kFocusBelow = 0.35;
 // How far from the rescued tets the smoothing that wins back the mean reaches (tet rings).
 constexpr int kCleanupRings = 6;
 
-OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
+OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) {
     const auto start = Clock::now();
     OptimiseStats s;
     compact_tets(dom);
@@ -146,7 +146,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         std::fill(changed.begin(), changed.end(), 0);
         const FlipSweepCounts f =
             flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, last_mean, o.mean_floor,
-                       pass > 0 ? &near : nullptr, changed, &collapses);
+                       pass > 0 ? &near : nullptr, changed, &collapses, pulse);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_flips += seconds_since(t0);
@@ -166,7 +166,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
         }
         std::fill(changed.begin(), changed.end(), 0);
         const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain,
-                                                o.mean_floor, pass > 0 ? &near : &bad_points, changed, collapses);
+                                                o.mean_floor, pass > 0 ? &near : &bad_points, changed, collapses, pulse);
         for (std::size_t p = 0; p < points; ++p)
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
         s.seconds_smoothing += seconds_since(t0);
@@ -185,6 +185,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
     if (o.passes > 0 && o.rescue_below > 0) {
         const auto t0 = Clock::now();
         std::fill(changed.begin(), changed.end(), 0);
+        beat(pulse);
         const RescueCounts r = rescue_worst_tets(dom, o.rescue_below, collapses, changed);
         s.rescued = r.lifted;
         s.inserted_points = r.inserted;
@@ -199,7 +200,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
             points_near(dom, changed, near);
             const Measure now = measure(dom, o.flip_threshold, collapses);
             const FlipSweepCounts f = flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, now.mean,
-                                                 o.mean_floor, &near, changed, &collapses);
+                                                 o.mean_floor, &near, changed, &collapses, pulse);
             points_near(dom, changed, poor);
             for (std::size_t p = 0; p < near.size(); ++p) near[p] |= poor[p];  // with the inserted points
             for (int ring = 1; ring < kCleanupRings; ++ring) {
@@ -207,7 +208,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
                 points_near(dom, poor, near);
             }
             const SmoothingCounts m = smooth_points(dom, o.smoothing_sweeps, o.smoothing_threshold, o.min_gain,
-                                                    o.mean_floor, &near, changed, collapses);
+                                                    o.mean_floor, &near, changed, collapses, pulse);
             s.flips23 += f.flips23;
             s.flips32 += f.flips32;
             s.flips44 += f.flips44;
@@ -228,9 +229,9 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o) {
 
 }  // namespace
 
-OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options) {
+OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options, const Pulse& pulse) {
     check(options);
-    return run(domain, options);
+    return run(domain, options, pulse);
 }
 
 }  // namespace tubemesh::tets

@@ -17,6 +17,8 @@
 // Points are only ever added (by the rescue, after the passes), never removed.
 #include <cstdint>
 
+
+#include "engine/core/pulse.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
@@ -86,6 +88,6 @@ struct OptimiseStats {
 
 // Throws tubemesh::Error on options out of range; a domain with free slots is compacted first.
 // Runs in the caller's oneTBB arena; the result is the same for any thread count.
-OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options = {});
+OptimiseStats optimise(TetDomain& domain, const OptimiseOptions& options = {}, const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

@@ -177,7 +177,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
 
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
-                              std::vector<double>& collapses) {
+                              std::vector<double>& collapses, const Pulse& pulse) {
     SmoothingCounts counts;
     const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
@@ -199,6 +199,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
         counts.colours = std::max<std::uint64_t>(counts.colours, classes.size());
         moved_points.clear();
         for (const auto& pts : classes) {
+            beat(pulse);
             moved.assign(pts.size(), 0);
             worst.assign(pts.size(), 0.0);
             const auto move_range = [&](const tbb::blocked_range<std::size_t>& r) {

@@ -20,6 +20,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/core/pulse.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
@@ -41,6 +42,6 @@ struct SmoothingCounts {
 // of every tet (collapse_of over its vertex row), read instead of computed and kept up to date.
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
-                              std::vector<double>& collapses);
+                              std::vector<double>& collapses, const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

@@ -20,7 +20,7 @@ constexpr int kRescueRounds = 2;
 // Where an inserted point may go, over each face of the tet, as fractions of the way from
 // the face's centroid to the apex that would make the tet on it regular; the rescue's moves
 // then place it. Several, because a high site can lie beyond the front or need a cavity larger
-// than a plan holds (the serpentine lift's flat tet: 9e-5 -> 0.338, from a cavity of 7 tets).
+// than a plan holds (bench/results/tuning-notes.md has the case that needed it).
 constexpr double kInsertionHeights[] = {1.0, 0.75, 0.5, 0.3};
 
 // The old rows of the slots a flip writes (its old tets and their face neighbours), the

@@ -10,7 +10,7 @@
 // one that raises the smallest collapse of the tets it changes most. A tet no flip lifts tries
 // a new free point instead (point_insertion.hpp), over each of its faces, followed by the same
 // moves; the first tet nothing lifts ends the search. Serial and in (collapse, tet) order, so
-// the result depends on the input only; a handful of tets per mesh (~3 ms on paper-ex1).
+// the result depends on the input only; a handful of tets per mesh, a few milliseconds.
 #include <cstdint>
 #include <vector>
 

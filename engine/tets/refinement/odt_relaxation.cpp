@@ -143,7 +143,7 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts)
 }  // namespace
 
 RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
-                             const Parallelism& par, const RelaxationOptions& options) {
+                             const Parallelism& par, const RelaxationOptions& options, const Pulse& pulse) {
     const auto t0 = Clock::now();
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
@@ -154,7 +154,9 @@ RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, 
     if (options.iterations == 0) return stats;
     for (int it = 0; it < options.iterations; ++it) {
         ++stats.iterations;
+        beat(pulse);
         stats.moves += move_points(domain, fixed, sizes);
+        beat(pulse);
         stats.second_walks += reinsert(domain, recovered, par.parts);
     }
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither

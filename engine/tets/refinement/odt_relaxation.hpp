@@ -19,6 +19,7 @@
 #include <span>
 
 #include "engine/core/parallelism.hpp"
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
@@ -49,6 +50,6 @@ struct RelaxationStats {
 // The kernel inserts with par.parts parts, in the caller's oneTBB arena: the result depends on
 // the input and that count only.
 RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
-                             const Parallelism& par, const RelaxationOptions& options = {});
+                             const Parallelism& par, const RelaxationOptions& options = {}, const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

@@ -12,7 +12,7 @@
 namespace tubemesh::tets {
 
 RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
-                            const RefineOptions& options, std::vector<double>* sizes_out) {
+                            const RefineOptions& options, std::vector<double>* sizes_out, const Pulse& pulse) {
     const auto t0 = Clock::now();
     if (domain.tets.size() == 0) throw Error("refinement: the tet domain has no tetrahedra");
     const unsigned parts = par.parts;
@@ -37,6 +37,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             sizes[v] = std::min(space.far_size(), space.term(sources[v], tri.points().data() + 3 * v));
         const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
+            beat(pulse);
             const MeshView view{tri.store(), tri.points(), sizes, sources};
             const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
             stats.too_big_left = static_cast<index_t>(faces.size());

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/parallelism.hpp"
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
@@ -61,6 +62,7 @@ struct RefineStats {
 // The kernel inserts with par.parts parts, in the caller's oneTBB arena: the same input and part
 // count give the same mesh whatever the thread count.
 RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
-                            const RefineOptions& options = {}, std::vector<double>* sizes = nullptr);
+                            const RefineOptions& options = {}, std::vector<double>* sizes = nullptr,
+                            const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

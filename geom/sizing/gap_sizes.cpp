@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "geom/model_occt.hpp"
+#include "geom/tubes/geometry_diagnosis.hpp"
 
 namespace tubemesh::geom {
 namespace {
@@ -77,7 +78,7 @@ std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<H
                         double fu, fv;
                         foot.LowerDistanceParameters(fu, fv);
                         if (n.inside->Perform(gp_Pnt2d(fu, fv)) == TopAbs_OUT) continue;
-                        const double d = foot.LowerDistance();
+                        const double d = std::max(foot.LowerDistance(), kThinnestRing * group.radius);
                         const gp_Pnt q = foot.NearestPoint();
                         out.push_back({{p.X(), p.Y(), p.Z()}, d});
                         out.push_back({{q.X(), q.Y(), q.Z()}, d});

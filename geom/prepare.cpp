@@ -186,6 +186,7 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     p.budget.max_elements = options.max_elements;
     p.budget.memory = options.memory;
     p.budget.sweep = options.sweep;
+    p.size_growth = options.size_growth;
     p.progress = options.progress;
     return p;
 }
@@ -261,7 +262,7 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         PhaseProgress progress(options.progress, "discretize", 1);
         p.geometry = discretize(model, p.tubes.tubes, p.plan, options.discretize);
         p.maps = make_surface_maps(model);
-        p.gap_sizes = gap_size_sources(model, holes, p.plan.size);
+        p.gap_sizes = gap_size_sources(model, holes, p.plan.size, options.size_growth);
         progress.finish();
     }
     std::size_t edge_points = 0, stations = 0;

@@ -41,6 +41,7 @@ struct PrepareOptions {
     // warning (the retry's, once thinner rings failed: geom/run_retry.hpp).
     std::vector<RingDrop> drop;
     ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
+    double size_growth = MeshOptions{}.size_growth;  // the surface size field's, for the gap sizes
 };
 
 // The user-facing part of MeshOptions (S, St, n, progress) as PrepareOptions.

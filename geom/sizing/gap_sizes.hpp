@@ -17,7 +17,9 @@ namespace tubemesh::geom {
 
 // Sources at the hole walls' points (a grid a quarter of the radius apart) whose distance d to
 // a near face is below `size`, and at their feet on that face, each of size d (at least
-// kThinnestRing of the radius).
-std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<HoleGroup>& holes, double size);
+// kThinnestRing of the radius); without those that others make redundant in a size field of
+// growth `growth` (the field is the same without them).
+std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<HoleGroup>& holes, double size,
+                                         double growth);
 
 }  // namespace tubemesh::geom

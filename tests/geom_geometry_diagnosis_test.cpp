@@ -82,9 +82,11 @@ TEST(GeometryDiagnosis, HoleTouchingAFaceIsZeroFromItNotNegative) {
     h.face = 3;
     h.distance = -2e-13;
     h.radius = 0.25;
-    const std::vector<std::string> warnings = geom::narrow_gap_warnings({h});
+    std::string cause;
+    const std::vector<std::string> warnings = geom::narrow_gap_warnings({h}, cause);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("passes 0 from face 3"), std::string::npos) << warnings[0];
+    EXPECT_EQ(cause, "the hole of faces 7 passes 0 from face 3, 0 of its radius");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "geom/builders/block_spec.hpp"
 #include "geom/mesh_file.hpp"
+#include "geom/run_retry.hpp"
 #include "tests/support/error_of.hpp"
 
 namespace {
@@ -124,6 +125,34 @@ TEST(RingFallback, APipeTangentToAFaceIsRefusedNamingTheLine) {
         [&] { geom::mesh_spec(block("tangent", {line({0, 3.2, 4 - r}, {4, 3.2, 4 - r})})); });
     EXPECT_NE(message.find("the solid's boundary touches itself along edge_"), std::string::npos) << message;
     EXPECT_NE(message.find("move the pipe off the face"), std::string::npos) << message;
+}
+
+// A tube whose pyramids find no room after the retry's thinner rings loses its ring: the next
+// attempt drops it (by its wall faces, with the reason), and the other tube's thinner St moves
+// down to its new index.
+TEST(RingFallback, TheRetryDropsARingThatFoundNoRoomAtAnyStTried) {
+    geom::PreparedModel prepared;
+    prepared.plan.sweep_size = 0.1;
+    prepared.geometry.tubes.resize(3);
+    prepared.geometry.tubes[0].wall_faces = {7};
+    prepared.geometry.tubes[1].wall_faces = {9, 10};
+    prepared.geometry.tubes[2].wall_faces = {11};
+    geom::RunRetry retry{MeshOptions{}};
+    const RetryableFailure both("no room", RetryableFailure::Cause::PyramidRoom, {1, 2}, "the pyramids found no room");
+    for (int i = 0; i < geom::RunRetry::kSweepSteps; ++i) retry.after(both, prepared);
+    EXPECT_TRUE(retry.prepare_options().drop.empty());
+    const RetryableFailure one("no room", RetryableFailure::Cause::PyramidRoom, {1}, "the pyramids found no room");
+    retry.after(one, prepared);
+    const geom::PrepareOptions next = retry.prepare_options();
+    ASSERT_EQ(next.drop.size(), 1u);
+    EXPECT_EQ(next.drop[0].faces, (std::vector<int>{9, 10}));
+    EXPECT_NE(next.drop[0].warning.find("meshed with tetrahedra"), std::string::npos) << next.drop[0].warning;
+    EXPECT_NE(next.drop[0].reason.find("no room"), std::string::npos) << next.drop[0].reason;
+    // Tube 3 (now 2) keeps its ring, thinned four times; tube 1 keeps the plan's St.
+    ASSERT_EQ(next.discretize.tube_sweep_size.size(), 2u);
+    EXPECT_EQ(next.discretize.tube_sweep_size[0], 0.0);
+    EXPECT_NEAR(next.discretize.tube_sweep_size[1], 0.1 * 0.7 * 0.7 * 0.7 * 0.7, 1e-15);
+    EXPECT_EQ(retry.ring_reason(1).find("its pyramids found no room at St = 0.1"), 0u) << retry.ring_reason(1);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace tubemesh::geom {
 
 namespace {
@@ -62,6 +64,7 @@ void RunRetry::after(const RetryableFailure& failure, const PreparedModel& prepa
                                         *room_failure_, sizes[t]));
             std::vector<int> faces(prepared.geometry.tubes[t].wall_faces.begin(),
                                    prepared.geometry.tubes[t].wall_faces.end());
+            std::sort(faces.begin(), faces.end());  // as TubeInfo::faces, which prepare matches
             std::string list;
             for (int f : faces) list += (list.empty() ? "" : ", ") + std::to_string(f);
             dropped_.push_back(

@@ -22,8 +22,8 @@ constexpr double kTetCollapseFloor = 0.2;
 constexpr double kHexConditionCeiling = 4;
 
 // Below the analysis limits (a tet under 0.2, a hex condition number over 4) the user hears of
-// it, with the likeliest cause: a gap too narrow beside a hole meshed with tets, what thinned the
-// ring, or the layers asked for.
+// it, with the likeliest cause: a gap too narrow beside a hole meshed with tets, pipe walls that
+// meet, what thinned the ring, or the layers asked for.
 void add_quality_warnings(PipelineResult& r, const PreparedModel& prepared, const MeshOptions& options) {
     const QualitySummary& q = r.quality;
     const SizePlan& plan = prepared.plan;
@@ -31,7 +31,7 @@ void add_quality_warnings(PipelineResult& r, const PreparedModel& prepared, cons
         r.warnings.push_back(fmt::format(
             "the worst tetrahedron has collapse {:.3f}, below {}{}", q.tet_collapse.min, kTetCollapseFloor,
             !prepared.flat_tets_cause.empty()
-                ? "; likely cause: a gap too narrow for sound tets (" + prepared.flat_tets_cause + ")"
+                ? "; likely cause: " + prepared.flat_tets_cause
             : plan.changes.empty() ? std::string(": check the report's histogram before using the mesh")
                                    : "; likely cause: the ring was thinned (" + plan.changes.back().rule + ": " +
                                          plan.changes.back().reason + ")"));

@@ -234,6 +234,11 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         // A pipe without a ring was warned of already, narrow gap or not.
         const std::vector<HoleClearance> gaps = measure_hole_clearances(model, holes);
         narrow_gap_warnings(gaps, p.flat_tets_cause);
+        // Else pipe walls that meet: they do at a sharp angle where pipes of one size cross or overlap.
+        for (const RingDrop& d : p.dropped)
+            if (p.flat_tets_cause.empty() && d.length == 0)
+                p.flat_tets_cause = fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there",
+                                                join(d.faces));
         std::vector<HoleClearance> holes_only;
         for (const HoleClearance& h : gaps)
             if (std::none_of(p.dropped.begin(), p.dropped.end(), [&](const RingDrop& d) { return d.faces == h.hole_faces; }))

@@ -62,8 +62,9 @@ public:
     // Per pipe, with a ring or not: wall area, share under the ring, thickness, reasons. The ring
     // thickness is the plan's St per tube here; the run reads the sweep's (mesh_file.hpp).
     std::vector<RingCoverage> coverage;
-    // The narrowest gap beside a hole meshed with tets, when its tets are flat (under kThinnestRing
-    // of the radius): the likely cause of a poor tet, in a few words; empty otherwise.
+    // The likely cause of a poor tet, in a few words: the narrowest gap beside a hole meshed with
+    // tets when its tets are flat (under kThinnestRing of the radius), else pipe walls that meet;
+    // empty when neither.
     std::string flat_tets_cause;
     // What the user should be told: no tube found, S lowered by the rules, the plan's own
     // warnings. One line each.

@@ -86,7 +86,7 @@ TEST(GeometryDiagnosis, HoleTouchingAFaceIsZeroFromItNotNegative) {
     const std::vector<std::string> warnings = geom::narrow_gap_warnings({h}, cause);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("passes 0 from face 3"), std::string::npos) << warnings[0];
-    EXPECT_EQ(cause, "the hole of faces 7 passes 0 from face 3, 0 of its radius");
+    EXPECT_EQ(cause, "a gap too narrow for sound tets (the hole of faces 7 passes 0 from face 3, 0 of its radius)");
 }
 
 }  // namespace

@@ -110,6 +110,13 @@ TEST_P(RingFallback, MeshesWithTetsWhereNoRingFitsAndKeepsTheOtherRing) {
     EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(), [&](const std::string& w) {
         return w.find(c.warning) != std::string::npos && w.find("meshed with tetrahedra") != std::string::npos;
     })) << ::testing::PrintToString(r.warnings);
+    // Sound tets, or a warning naming why not (the touching pipes: a gap down to 0; where pipes of
+    // one size cross, their walls meet at angles down to 0).
+    const bool explained = std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) {
+        return w.find("likely cause: a gap too narrow for sound tets") != std::string::npos ||
+               w.find("likely cause: pipe walls that meet") != std::string::npos;
+    });
+    EXPECT_TRUE(r.quality.tet_collapse.min >= 0.2 || explained) << r.quality.tet_collapse.min;
     const auto line = std::find_if(run.model_lines.begin(), run.model_lines.end(), [](const std::string& l) {
         return l.find("hex rings cover") != std::string::npos;
     });

@@ -174,7 +174,8 @@ std::vector<std::string> narrow_gap_warnings(const std::vector<HoleClearance>& h
         const double distance = shown(h.distance, h.radius);
         if (distance / h.radius < narrowest || cause.empty()) {
             narrowest = distance / h.radius;
-            cause = fmt::format("the hole of faces {} passes {:.3g} from face {}, {:.2g} of its radius",
+            cause = fmt::format("a gap too narrow for sound tets (the hole of faces {} passes {:.3g} from face {}, {:.2g} "
+                                "of its radius)",
                                 face_list(h.hole_faces), distance, h.face, distance / h.radius);
         }
         out.push_back(fmt::format(

@@ -56,7 +56,8 @@ int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thin
 
 // A hole that is not a tube within kThinnestRing of its radius of a face it does not touch: the
 // tets in that gap are flat. One warning line each; `cause` gets the narrowest such gap in a few
-// words ("the hole of faces 9 passes 0 from face 6"), for the quality warning; empty when none.
+// words ("a gap too narrow for sound tets (the hole of faces 9 passes 0 from face 6, ...)"), for
+// the quality warning; empty when none.
 std::vector<std::string> narrow_gap_warnings(const std::vector<HoleClearance>& holes, std::string& cause);
 
 }  // namespace tubemesh::geom

@@ -1,7 +1,9 @@
 // Whole runs on many generated blocks (heavy): random blocks 1-500 and blocks with pipes
 // deliberately close to each other and to a face (close_block.hpp, seeds 1-200) mesh and pass
-// the check; a pipe no ring fits is meshed with tets (geometry_diagnosis.hpp). Each outcome and
-// the share of pipe wall under hex rings is printed for the closing note's counts.
+// the check; a pipe no ring fits is meshed with tets (geometry_diagnosis.hpp). A close block whose
+// boundary touches itself along a line (a pipe tangent to a face or to the other pipe) has no
+// conforming mesh and is refused. Each outcome and the share of pipe wall under hex rings is
+// printed for the closing note's counts.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -19,7 +21,7 @@ using namespace tubemesh;
 
 std::string seed_name(const ::testing::TestParamInfo<int>& info) { return "seed" + std::to_string(info.param); }
 
-void mesh_and_check(const geom::BlockSpec& spec) {
+void mesh_and_check(const geom::BlockSpec& spec, bool self_contact_allowed) {
     const geom::BuiltBlock block = geom::build_block(spec);
     try {
         const geom::MeshRun run = geom::mesh_model(block.model);
@@ -30,19 +32,20 @@ void mesh_and_check(const geom::BlockSpec& spec) {
                     static_cast<unsigned>(run.result.mesh.cell_count(CellKind::Tet)),
                     run.result.quality.tet_collapse.min, wall, geom::ring_share(run.coverage));
     } catch (const Error& e) {
-        ADD_FAILURE() << spec.name << ": " << e.what();
-        std::printf("%s: FAILED: %s\n", spec.name.c_str(), e.what());
+        const bool self_contact = std::string(e.what()).find("boundary touches itself") != std::string::npos;
+        EXPECT_TRUE(self_contact_allowed && self_contact) << spec.name << ": " << e.what();
+        std::printf("%s: %s: %s\n", spec.name.c_str(), self_contact ? "refused" : "FAILED", e.what());
     }
 }
 
 class RandomBlocks : public ::testing::TestWithParam<int> {};
 TEST_P(RandomBlocks, MeshAndPassTheCheck) {
-    mesh_and_check(geom::random_block_spec(static_cast<std::uint64_t>(GetParam())));
+    mesh_and_check(geom::random_block_spec(static_cast<std::uint64_t>(GetParam())), false);
 }
 INSTANTIATE_TEST_SUITE_P(Seeds, RandomBlocks, ::testing::Range(1, 501), seed_name);
 
 class CloseBlocks : public ::testing::TestWithParam<int> {};
-TEST_P(CloseBlocks, MeshAndPassTheCheck) {
+TEST_P(CloseBlocks, MeshAndPassTheCheckOrTouchThemselves) {
     const geom::BlockSpec spec = geom::close_block_spec(static_cast<std::uint64_t>(GetParam()));
     try {
         geom::build_block(spec);
@@ -51,7 +54,7 @@ TEST_P(CloseBlocks, MeshAndPassTheCheck) {
         std::printf("%s: not built: %s\n", spec.name.c_str(), e.what());
         return;
     }
-    mesh_and_check(spec);
+    mesh_and_check(spec, true);
 }
 INSTANTIATE_TEST_SUITE_P(Seeds, CloseBlocks, ::testing::Range(1, 201), seed_name);
 

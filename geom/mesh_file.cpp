@@ -22,15 +22,19 @@ constexpr double kTetCollapseFloor = 0.2;
 constexpr double kHexConditionCeiling = 4;
 
 // Below the analysis limits (a tet under 0.2, a hex condition number over 4) the user hears of
-// it, with the likeliest cause: what thinned the ring, or the layers asked for.
-void add_quality_warnings(PipelineResult& r, const SizePlan& plan, const MeshOptions& options) {
+// it, with the likeliest cause: a gap too narrow beside a hole meshed with tets, pipe walls that
+// meet, what thinned the ring, or the layers asked for.
+void add_quality_warnings(PipelineResult& r, const PreparedModel& prepared, const MeshOptions& options) {
     const QualitySummary& q = r.quality;
+    const SizePlan& plan = prepared.plan;
     if (q.tet_collapse.count > 0 && q.tet_collapse.min < kTetCollapseFloor)
         r.warnings.push_back(fmt::format(
             "the worst tetrahedron has collapse {:.3f}, below {}{}", q.tet_collapse.min, kTetCollapseFloor,
-            plan.changes.empty() ? std::string(": check the report's histogram before using the mesh")
-                                 : "; likely cause: the ring was thinned (" + plan.changes.back().rule + ": " +
-                                       plan.changes.back().reason + ")"));
+            !prepared.flat_tets_cause.empty()
+                ? "; likely cause: " + prepared.flat_tets_cause
+            : plan.changes.empty() ? std::string(": check the report's histogram before using the mesh")
+                                   : "; likely cause: the ring was thinned (" + plan.changes.back().rule + ": " +
+                                         plan.changes.back().reason + ")"));
     if (q.hex_condition.count > 0 && q.hex_condition.max > kHexConditionCeiling)
         r.warnings.push_back(fmt::format(
             "the worst hexahedron has condition number {:.3g}, over {}: with {} layers across a ring of "
@@ -53,7 +57,7 @@ void finish_run(MeshRun& run, const Model& model, const PreparedModel& prepared,
     for (const std::string& w : retry.warnings()) warnings.push_back(w);
     r.warnings.insert(r.warnings.begin(), warnings.begin(), warnings.end());
 
-    add_quality_warnings(r, prepared.plan, options);
+    add_quality_warnings(r, prepared, options);
     describe_groups(model, prepared.tubes, r.mesh, r.description);
 
     run.source = model.report().source;
@@ -64,6 +68,19 @@ void finish_run(MeshRun& run, const Model& model, const PreparedModel& prepared,
     run.size = prepared.geometry.size;
     run.sweep_size = prepared.geometry.sweep_size;
     run.tubes = prepared.geometry.tubes.size();
+    run.coverage = prepared.coverage;
+    for (RingCoverage& c : run.coverage) {
+        if (c.tube <= 0) continue;
+        const std::size_t t = static_cast<std::size_t>(c.tube - 1);
+        for (const TubeRing& ring : r.sweep.rings)
+            if (ring.tube == t) {
+                c.thinnest = ring.thinnest;
+                c.thickest = ring.thickest;
+            }
+        const std::string thinned = retry.ring_reason(t);
+        if (!thinned.empty()) c.reason = thinned;
+        if (c.thinnest < c.thickest && c.reason.empty()) c.reason = "thinned locally where a face or a tube is near";
+    }
 }
 
 PhaseReport model_phase(const char* name, double seconds, const Model& model) {
@@ -83,12 +100,13 @@ MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage 
         try {
             run.result = run_pipeline(prepared.pipeline_input(), retry.mesh_options(), until);
         } catch (const RetryableFailure& failure) {
-            retry.after(failure, prepared.plan, prepared.geometry.tubes.size());
+            retry.after(failure, prepared);
             continue;
         }
         retry.accept();
         finish_run(run, model, prepared, options, std::move(first), retry, k);
         scale_back(run, k);
+        for (const std::string& line : coverage_lines(run.coverage)) run.model_lines.push_back(line);
         return run;
     }
 }

@@ -16,8 +16,9 @@
 //
 // A phase that fails where other sizes may succeed (pyramids without room in front of a ring,
 // boundary recovery giving up on a valid front) is run again with what the user did not give:
-// thinner rings for those tubes, a coarser chordal tolerance (run_retry.hpp); the result's
-// warnings and model_lines say what changed. A run that succeeds the first time is never changed.
+// thinner rings for those tubes, a coarser chordal tolerance (run_retry.hpp), and a tube whose
+// ring finds no room at any St tried is meshed with tets; the result's warnings and model_lines
+// say what changed. A run that succeeds the first time is never changed.
 //
 // Throws tubemesh::Error, one line a user can act on, for a missing or unreadable file, a file
 // with no solid or several solids and no `solid` chosen, invalid or contradictory sizes, a
@@ -30,6 +31,7 @@
 #include "engine/pipeline/pipeline.hpp"
 #include "geom/builders/block_spec.hpp"
 #include "geom/model/model.hpp"
+#include "geom/tubes/ring_coverage.hpp"
 
 namespace tubemesh::geom {
 
@@ -44,6 +46,9 @@ struct MeshRun {
     double size = 0;                      // S used
     double sweep_size = 0;                // St used (0 without tubes)
     std::size_t tubes = 0;
+    // Per pipe: its wall's share under a hex ring, the ring's thickness range, and why it was
+    // thinned or has none (geom/tubes/ring_coverage.hpp); model_lines end with the same as text.
+    std::vector<RingCoverage> coverage;
 };
 
 struct MeshFileOptions {

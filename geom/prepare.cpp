@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unordered_set>
 
 #include "engine/core/timing.hpp"
@@ -91,21 +92,78 @@ ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes
                                 options.budget, context);
 }
 
-std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan) {
+std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan,
+                                       const std::vector<RingDrop>& dropped) {
     std::vector<std::string> w;
-    if (tubes.tubes.empty())
+    if (tubes.tubes.empty() && dropped.empty())
         w.push_back("no tubular hole found in the solid: no hex rings or pyramids, the volume is meshed with "
                     "tetrahedra only");
     // A hole that lost its ring says so by name: the tets are a fallback, not what was asked for.
-    for (const TubeRejection& r : tubes.rejected)
-        if (r.crease)
-            w.push_back(fmt::format(
-                "faces {} form one hole whose curved walls meet along the axis at an angle ({}), as pipes that overlap "
-                "do: no hex ring fits it, so it is meshed with tetrahedra; for hex rings, keep the pipes at least a "
-                "tenth of a diameter apart or make them one pipe in the CAD model",
-                join(r.faces), r.reason));
+    for (const RingDrop& d : dropped) w.push_back(d.warning);
     for (const std::string& x : plan.warnings) w.push_back(x);
     return w;
+}
+
+bool same_faces(const std::vector<int>& a, const std::vector<int>& b) { return a == b; }
+
+// The tubes the caller drops whatever their room (the retry's) leave the search for `dropped`.
+void drop_given(TubeSearch& tubes, const std::vector<RingDrop>& given, std::vector<RingDrop>& dropped) {
+    for (const RingDrop& d : given)
+        for (auto t = tubes.tubes.begin(); t != tubes.tubes.end(); ++t)
+            if (same_faces(t->faces, d.faces)) {
+                dropped.push_back({d.faces, t->radius_min, t->length, d.reason, d.warning});
+                tubes.tubes.erase(t);
+                break;
+            }
+}
+
+// A pipe's wall in a group the tube search rejected: its curved faces (a group that ran into the
+// host along a tangent wall holds the host's flat faces too).
+std::vector<int> curved_faces(const Model& model, const std::vector<int>& faces) {
+    std::vector<int> out;
+    for (int f : faces)
+        if (!face_properties(model, f).planar) out.push_back(f);
+    return out.empty() ? faces : out;
+}
+
+// The holes meshed with tets, for the gap sizes: the search's rejected groups and the tubes that
+// lost their rings, each by its wall.
+TubeSearch tet_holes(const Model& model, const TubeSearch& tubes, const std::vector<RingDrop>& dropped) {
+    TubeSearch holes;
+    for (TubeRejection r : tubes.rejected) {
+        for (const RingDrop& d : dropped)
+            if (d.length == 0 && same_faces(d.faces, r.faces)) r.faces = curved_faces(model, r.faces);
+        holes.rejected.push_back(std::move(r));
+    }
+    for (const RingDrop& d : dropped)
+        if (d.length > 0) holes.rejected.push_back({d.faces, d.reason, 2, false, d.radius});
+    return holes;
+}
+
+// Per pipe: a ring at the plan's St (or the caller's per tube), or none and why.
+std::vector<RingCoverage> ring_coverage(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
+                                        const std::vector<RingDrop>& dropped, const PrepareOptions& options) {
+    std::vector<RingCoverage> out;
+    const std::vector<double>& given = options.discretize.tube_sweep_size;
+    for (std::size_t t = 0; t < tubes.tubes.size(); ++t) {
+        const TubeInfo& tube = tubes.tubes[t];
+        const double st = t < given.size() && given[t] > 0 ? given[t] : plan.sweep_size;
+        RingCoverage c{tube.faces, static_cast<int>(t + 1),
+                       2 * std::numbers::pi * (tube.radius_min + tube.radius_max) / 2 * tube.length, 1.0, st, st, {}};
+        if (!plan.changes.empty())
+            c.reason = fmt::format("St cut by {}: {}", sizing_rule_name(plan.changes.back().rule), plan.changes.back().reason);
+        out.push_back(std::move(c));
+    }
+    for (const RingDrop& d : dropped) {
+        RingCoverage c{d.length > 0 ? d.faces : curved_faces(model, d.faces), 0, 0, 0, 0, 0, d.reason};
+        if (d.length > 0)
+            c.wall_area = 2 * std::numbers::pi * d.radius * d.length;
+        else
+            for (int f : c.faces) c.wall_area += face_properties(model, f).area;
+        out.push_back(std::move(c));
+    }
+    std::sort(out.begin(), out.end(), [](const RingCoverage& a, const RingCoverage& b) { return a.faces < b.faces; });
+    return out;
 }
 
 }  // namespace
@@ -128,6 +186,7 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     p.budget.max_elements = options.max_elements;
     p.budget.memory = options.memory;
     p.budget.sweep = options.sweep;
+    p.size_growth = options.size_growth;
     p.progress = options.progress;
     return p;
 }
@@ -139,12 +198,16 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         throw Error(fmt::format("the number of nodes around a tube must be at least 3 (4 or more recommended), got {}",
                                 options.discretize.ring_nodes));
     PreparedModel p;
-    std::vector<HoleGroup> holes;  // holes that are not tubes: for the diagnosis and the gap sizes
+    std::vector<HoleGroup> holes;  // holes meshed with tets: for the narrow gaps' warnings and sizes
+    std::vector<std::string> gap_warnings;
     auto t0 = Clock::now();
     {
         PhaseProgress progress(options.progress, "tubes", 1);
+        refuse_self_contact(model);
         p.tubes = find_tubes(model, options.tubes);
-        diagnose_faces(p.tubes, model.face_count());
+        p.dropped = walls_without_ring(p.tubes, model.face_count());
+        drop_given(p.tubes, options.drop, p.dropped);
+        drop_branches(p.tubes, p.dropped);
         progress.finish();
     }
     p.phases.push_back({"tubes", seconds_since(t0),
@@ -156,12 +219,32 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
     t0 = Clock::now();
     {
         PhaseProgress progress(options.progress, "sizes", 1);
-        p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
-        // Pipes too close for any ring first: no St would help there.
-        diagnose_clearances(p.tubes, p.plan);
+        // Pipes too close for any ring worth making lose theirs one at a time, the closest first:
+        // no St would help there, and the others' St is planned without them.
+        for (;;) {
+            p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
+            RingDrop drop;
+            const int t = tube_without_room(p.tubes, p.plan, thinnest_ring(options.sizing.local_ring), drop);
+            if (t < 0) break;
+            p.tubes.tubes.erase(p.tubes.tubes.begin() + t);
+            p.dropped.push_back(std::move(drop));
+        }
         refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
-        holes = hole_groups(model, p.tubes, p.plan.size);
-        diagnose_hole_clearances(measure_hole_clearances(model, holes));
+        holes = hole_groups(model, p.dropped.empty() ? p.tubes : tet_holes(model, p.tubes, p.dropped), p.plan.size);
+        // A pipe without a ring was warned of already, narrow gap or not.
+        const std::vector<HoleClearance> gaps = measure_hole_clearances(model, holes);
+        narrow_gap_warnings(gaps, p.flat_tets_cause);
+        // Else pipe walls that meet: they do at a sharp angle where pipes of one size cross or overlap.
+        for (const RingDrop& d : p.dropped)
+            if (p.flat_tets_cause.empty() && d.length == 0)
+                p.flat_tets_cause = fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there",
+                                                join(d.faces));
+        std::vector<HoleClearance> holes_only;
+        for (const HoleClearance& h : gaps)
+            if (std::none_of(p.dropped.begin(), p.dropped.end(), [&](const RingDrop& d) { return d.faces == h.hole_faces; }))
+                holes_only.push_back(h);
+        std::string cause;
+        gap_warnings = narrow_gap_warnings(holes_only, cause);
         p.estimate = refuse_oversized_run(model, p.tubes, p.plan, options);
         // A limit in elements caps the real counts too. The memory's worth does not: the bytes an
         // element takes vary from run to run, and a run that fits in memory is not refused.
@@ -175,14 +258,16 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
     sizes.statistics = {{"S", p.plan.size}};
     if (!p.tubes.tubes.empty()) sizes.statistics.push_back({"St", p.plan.sweep_size});
     p.phases.push_back(std::move(sizes));
-    p.warnings = plan_warnings(p.tubes, p.plan);
+    p.warnings = plan_warnings(p.tubes, p.plan, p.dropped);
+    p.warnings.insert(p.warnings.end(), gap_warnings.begin(), gap_warnings.end());
+    p.coverage = ring_coverage(model, p.tubes, p.plan, p.dropped, options);
 
     t0 = Clock::now();
     {
         PhaseProgress progress(options.progress, "discretize", 1);
         p.geometry = discretize(model, p.tubes.tubes, p.plan, options.discretize);
         p.maps = make_surface_maps(model);
-        p.gap_sizes = gap_size_sources(model, holes, p.plan.size);
+        p.gap_sizes = gap_size_sources(model, holes, p.plan.size, options.size_growth);
         progress.finish();
     }
     std::size_t edge_points = 0, stations = 0;
@@ -232,7 +317,10 @@ std::vector<std::string> PreparedModel::report_lines(int scale_exponent) const {
     const TubeSearch found = at_source_scale(tubes, scale_exponent);
     const SizePlan shown = at_source_scale(plan, scale_exponent);
     std::vector<std::string> lines;
-    lines.push_back(fmt::format("{} tube{} found", found.tubes.size(), found.tubes.size() == 1 ? "" : "s"));
+    lines.push_back(fmt::format("{} tube{} found", found.tubes.size(), found.tubes.size() == 1 ? "" : "s") +
+                    (dropped.empty() ? std::string()
+                                     : fmt::format(" with a hex ring, {} pipe{} without", dropped.size(),
+                                                   dropped.size() == 1 ? "" : "s")));
     for (std::size_t t = 0; t < found.tubes.size(); ++t) {
         const TubeInfo& tube = found.tubes[t];
         lines.push_back(fmt::format("  tube {}: faces {}, radius {:.6g}, length {:.6g}, hosts face_{} and face_{}",
@@ -244,6 +332,7 @@ std::vector<std::string> PreparedModel::report_lines(int scale_exponent) const {
                                         *std::min_element(th.begin(), th.end()), plan.sweep_size));
         }
     }
+    for (const RingDrop& d : dropped) lines.push_back(fmt::format("  no hex ring (faces {}): {}", join(d.faces), d.reason));
     for (const TubeRejection& r : found.rejected) {
         if (r.faces.empty())
             lines.push_back(fmt::format("  not a tube: {}", r.reason));

@@ -9,6 +9,11 @@
 // each came from the user or from a default). A given S is never changed; a default S is
 // recomputed from the final St (geom/sizing/sizing.hpp).
 //
+// A pipe no hex ring fits (walls that meet, a wall tangent to a face, too little room for the
+// thinnest ring worth making: geom/sizing/geometry_diagnosis.hpp) is meshed like a hole that is no
+// tube, with a warning, and St and S are planned from the other tubes alone; the gap between its
+// wall and a near face gets triangles and tets of the gap's size (geom/sizing/gap_sizes.hpp).
+//
 // No OpenCASCADE header here.
 #include <memory>
 #include <string>
@@ -21,6 +26,8 @@
 #include "geom/sizing/element_budget.hpp"
 #include "geom/model/model.hpp"
 #include "geom/sizing/sizing.hpp"
+#include "geom/sizing/geometry_diagnosis.hpp"
+#include "geom/tubes/ring_coverage.hpp"
 #include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {
@@ -30,7 +37,11 @@ struct PrepareOptions {
     TubeOptions tubes;
     DiscretizeOptions discretize;  // ring_nodes = n; 0 picks circumferential_count per tube
     ElementBudget budget;          // checked right after the sizes are planned
+    // Tubes meshed without a ring whatever their room, each by its wall faces, with the reason and
+    // warning (the retry's, once thinner rings failed: geom/run_retry.hpp).
+    std::vector<RingDrop> drop;
     ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
+    double size_growth = MeshOptions{}.size_growth;  // the surface size field's, for the gap sizes
 };
 
 // The user-facing part of MeshOptions (S, St, n, progress) as PrepareOptions.
@@ -46,6 +57,15 @@ public:
     std::vector<std::unique_ptr<SurfaceMap>> maps;  // element i: face id i + 1
     std::vector<SizeSource> gap_sizes;              // geom/sizing/gap_sizes.hpp
     std::vector<PhaseReport> phases;                // "tubes", "sizes", "discretize"
+    // Pipes meshed without a ring and why; `tubes` holds the tubes that keep theirs.
+    std::vector<RingDrop> dropped;
+    // Per pipe, with a ring or not: wall area, share under the ring, thickness, reasons. The ring
+    // thickness is the plan's St per tube here; the run reads the sweep's (mesh_file.hpp).
+    std::vector<RingCoverage> coverage;
+    // The likely cause of a poor tet, in a few words: the narrowest gap beside a hole meshed with
+    // tets when its tets are flat (under kThinnestRing of the radius), else pipe walls that meet;
+    // empty when neither.
+    std::string flat_tets_cause;
     // What the user should be told: no tube found, S lowered by the rules, the plan's own
     // warnings. One line each.
     std::vector<std::string> warnings;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace tubemesh::geom {
 
 namespace {
@@ -23,10 +25,13 @@ RunRetry::RunRetry(const MeshOptions& options)
 PrepareOptions RunRetry::prepare_options() const {
     PrepareOptions p = geom::prepare_options(options_);
     p.discretize.tube_sweep_size = options_.sweep.tube_sweep_size;
+    p.drop = dropped_;
     return p;
 }
 
-void RunRetry::after(const RetryableFailure& failure, const SizePlan& plan, std::size_t tube_count) {
+void RunRetry::after(const RetryableFailure& failure, const PreparedModel& prepared) {
+    const SizePlan& plan = prepared.plan;
+    const std::size_t tube_count = prepared.geometry.tubes.size();
     if (failure.cause == RetryableFailure::Cause::PyramidRoom) {
         const double st = sweep_given_ && options_.sweep_size > 0 ? options_.sweep_size : plan.sweep_size;
         if (sweep_given_)
@@ -43,14 +48,33 @@ void RunRetry::after(const RetryableFailure& failure, const SizePlan& plan, std:
         std::vector<index_t> tubes = failure.tubes;
         if (tubes.empty())
             for (std::size_t t = 0; t < tube_count; ++t) tubes.push_back(static_cast<index_t>(t));
-        for (index_t t : tubes) {
+        // Last first: a tube that loses its ring shifts the ones after it down by one.
+        for (auto it = tubes.rbegin(); it != tubes.rend(); ++it) {
+            const index_t t = *it;
             if (t >= tube_count) throw Error(failure.what());
-            if (sweep_steps_[t] == kSweepSteps)
-                throw Error(fmt::format("{} (tube {}'s ring was thinned to St = {:.6g} without success: move the pipe "
+            if (sweep_steps_[t] < kSweepSteps) {
+                sizes[t] = kSweepFactor * (sizes[t] > 0 ? sizes[t] : plan_sweep_);
+                ++sweep_steps_[t];
+                continue;
+            }
+            // The failure names no tube when no ring holds the front: nothing to drop then.
+            if (failure.tubes.empty())
+                throw Error(fmt::format("{} (the rings were thinned to St = {:.6g} without success: move the pipes "
                                         "or give a larger --size)",
-                                        *room_failure_, t + 1, sizes[t]));
-            sizes[t] = kSweepFactor * (sizes[t] > 0 ? sizes[t] : plan_sweep_);
-            ++sweep_steps_[t];
+                                        *room_failure_, sizes[t]));
+            std::vector<int> faces(prepared.geometry.tubes[t].wall_faces.begin(),
+                                   prepared.geometry.tubes[t].wall_faces.end());
+            std::sort(faces.begin(), faces.end());  // as TubeInfo::faces, which prepare matches
+            std::string list;
+            for (int f : faces) list += (list.empty() ? "" : ", ") + std::to_string(f);
+            dropped_.push_back(
+                {faces, 0, 0, fmt::format("its pyramids found no room down to St = {:.3g}", sizes[t]),
+                 fmt::format("{} in front of the ring of the pipe of wall face{} {}, thinned {} times down to St = "
+                             "{:.6g}: no hex ring, meshed with tetrahedra; for a hex ring, move the pipe or give a "
+                             "larger --size",
+                             *room_failure_, faces.size() == 1 ? "" : "s", list, kSweepSteps, sizes[t])});
+            sizes.erase(sizes.begin() + t);
+            sweep_steps_.erase(sweep_steps_.begin() + t);
         }
         return;
     }
@@ -92,6 +116,12 @@ std::vector<std::string> RunRetry::warnings() const {
                                 "--chordal {:.6g} (curved edges cut coarser)",
                                 chordal_first_, options_.chordal));
     return w;
+}
+
+std::string RunRetry::ring_reason(std::size_t t) const {
+    if (t >= sweep_steps_.size() || sweep_steps_[t] == 0) return {};
+    return fmt::format("its pyramids found no room at St = {:.6g}: thinned to {:.6g}", plan_sweep_,
+                       options_.sweep.tube_sweep_size[t]);
 }
 
 std::vector<std::string> RunRetry::report_lines() const {

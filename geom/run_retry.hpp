@@ -5,8 +5,9 @@
 //
 //  * The pyramids find no room in front of some rings (Cause::PyramidRoom): with St automatic,
 //    the rings of those tubes alone are made thinner, St x 0.7 per attempt, each at most
-//    kSweepSteps times; the other rings keep the plan's St. With St given, the run is refused
-//    naming that St and a thinner one to try.
+//    kSweepSteps times; the other rings keep the plan's St. A tube whose ring still finds no room
+//    after those loses it: its wall is meshed with tets (geom/prepare.hpp), with a warning. With
+//    St given, the run is refused naming that St and a thinner one to try.
 //  * Boundary recovery gives up on a front that passed its checks (Cause::Recovery; seen on
 //    long, nearly flat surface triangles along a hole's generator, where the flips and Steiner
 //    points of engine/tets/recovery run out): the chordal tolerance is doubled, at most
@@ -39,9 +40,9 @@ public:
     PrepareOptions prepare_options() const;
     const MeshOptions& mesh_options() const { return options_; }
 
-    // After a failed attempt on `plan` with `tube_count` tubes: sets up the next one, or throws
-    // tubemesh::Error with the failure's message and what to change.
-    void after(const RetryableFailure& failure, const SizePlan& plan, std::size_t tube_count);
+    // After a failed attempt on `prepared`: sets up the next one, or throws tubemesh::Error with
+    // the failure's message and what to change.
+    void after(const RetryableFailure& failure, const PreparedModel& prepared);
     // After an attempt that meshed: throws when it meshed only with a setting the user gave
     // changed (the message names the value that works).
     void accept() const;
@@ -50,6 +51,9 @@ public:
     // lines for the plan's report.
     std::vector<std::string> warnings() const;
     std::vector<std::string> report_lines() const;
+    // Why tube t's ring (an index into the last attempt's tubes) is thinner than the plan's St;
+    // empty when the retry did not thin it.
+    std::string ring_reason(std::size_t t) const;
 
 private:
     MeshOptions options_;     // the next attempt's
@@ -60,6 +64,7 @@ private:
     double plan_sweep_ = 0;                        // the plan's St, once a tube was thinned
     std::vector<int> sweep_steps_;                 // per tube
     std::optional<std::string> room_failure_;      // the first pyramid failure's message
+    std::vector<RingDrop> dropped_;                // tubes whose rings found no room at any St tried
 };
 
 }  // namespace tubemesh::geom

@@ -97,6 +97,11 @@ void scale_back(MeshRun& run, int k) {
             for (Vec3& p : end.outer_xyz) p = scale_vec(p, k);
     }
     for (SizeSource& s : r.surface_size_caps) s = {scale_vec(s.point, k), from_working(s.size, k)};
+    for (RingCoverage& c : run.coverage) {
+        c.wall_area = rescale(c.wall_area, k, 2);
+        c.thinnest = from_working(c.thinnest, k);
+        c.thickest = from_working(c.thickest, k);
+    }
     run.size = from_working(run.size, k);
     run.sweep_size = from_working(run.sweep_size, k);
 }

@@ -58,6 +58,21 @@ nlohmann::json groups_json(const HybridMesh& m, const MeshDescription& d) {
     return groups;
 }
 
+// Per pipe: wall area, share under a hex ring, the ring's thickness range, why thinned or none.
+nlohmann::json pipes_json(const std::vector<geom::RingCoverage>& pipes) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const geom::RingCoverage& p : pipes) {
+        nlohmann::json j = {{"faces", p.faces},
+                            {"wall_area", p.wall_area},
+                            {"ring_share", p.share},
+                            {"ring_thickness", {{"min", p.thinnest}, {"max", p.thickest}}},
+                            {"reason", p.reason}};
+        if (p.tube > 0) j["ring"] = "pipe_" + std::to_string(p.tube);
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<std::string> group_lines(const geom::MeshRun& run) {
@@ -113,6 +128,8 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
                              {"stage", stage_name(r.reached)},
                              {"sizes", {{"S", run.size}, {"St", run.sweep_size}}},
                              {"tubes", run.tubes},
+                             {"pipes", pipes_json(run.coverage)},
+                             {"ring_share", geom::ring_share(run.coverage)},
                              {"nodes", m.point_count()},
                              {"hexes", m.cell_count(CellKind::Hex)},
                              {"pyramids", m.cell_count(CellKind::Pyramid)},

@@ -21,8 +21,10 @@ std::string run_table(const geom::MeshRun& run);
 std::vector<std::string> group_lines(const geom::MeshRun& run);
 // The same table's rows with the totals (quality_table.hpp), for other renderings.
 std::vector<TableRow> run_table_rows(const geom::MeshRun& run);
-// Everything above as one object: source, the solid's name, stage, sizes, counts, phases,
-// quality, check, warnings, outputs, and "paper_table1" for one of the paper's examples.
+// Everything above as one object: source, the solid's name, stage, sizes, counts, the pipes
+// (each one's wall area, share under a hex ring, ring thickness range and reason) and the share of
+// all pipe wall under rings, phases, quality, check, warnings, outputs, and "paper_table1" for
+// one of the paper's examples.
 nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs);
 
 }  // namespace tubemesh::run

@@ -102,20 +102,21 @@ double elements_said(const std::string& message) {
     return at == std::string::npos ? 0 : std::stod(message.substr(at + 20));
 }
 
-// A pipe 0.01 from a face: the guard cuts St to 0.003, and the rings then need more than a
-// million elements. The message compares a figure that really exceeds the limit, names the guard
-// as St's source, and does not send the user to a larger St the rules refuse: it names the
-// element limit that would do.
+// A pipe 0.025 (half its radius) from a face: the guard cuts St to 0.0074, and the rings then
+// need more than 100 000 elements. The message compares a figure that really exceeds the limit,
+// names the guard as St's source, and does not send the user to a larger St the rules refuse: it
+// names the element limit that would do. (Closer, the ring would be under 0.1 r: the pipe would
+// lose it, geometry_diagnosis.hpp.)
 TEST(ElementBudget, RingsOfAGuardCutStAreRefusedWithoutCircularAdvice) {
     const geom::BuiltBlock block = geom::build_block(geom::parse_block_spec(
         R"({"check_clearance": false, "box": [4, 3, 2],
-            "pipes": [{"path": "line", "diameter": 0.1, "points": [[0, 1.5, 0.06], [4, 1.5, 0.06]]}]})",
+            "pipes": [{"path": "line", "diameter": 0.1, "points": [[0, 1.5, 0.075], [4, 1.5, 0.075]]}]})",
         "near face"));
     geom::PrepareOptions po;
-    po.budget.max_elements = 1e6;
+    po.budget.max_elements = 1e5;
     const std::string message = tubemesh::testing::error_of([&] { geom::prepare_model(block.model, po); });
-    EXPECT_GT(elements_said(message), 1e6) << message;
-    EXPECT_NE(message.find("St = 0.00296875 (default: smallest tube diameter, cut by guard: boundary)"),
+    EXPECT_GT(elements_said(message), 1e5) << message;
+    EXPECT_NE(message.find("St = 0.00742187 (default: smallest tube diameter, cut by guard: boundary)"),
               std::string::npos)
         << message;
     EXPECT_EQ(message.find("give a larger --sweep-size"), std::string::npos) << message;

@@ -291,6 +291,17 @@ AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
     run.size = geometry.size;
     run.sweep_size = geometry.sweep_size;
     run.tubes = geometry.tubes.size();
+    // Each solid's pipes by the whole's face ids; a ring by its tube in the whole's order.
+    std::size_t first_tube = 0;
+    for (std::size_t k = 0; k < solids.size(); ++k) {
+        for (RingCoverage c : prepared[k].coverage) {
+            for (int& f : c.faces) f = solids[k].face_ids[static_cast<std::size_t>(f) - 1];
+            std::sort(c.faces.begin(), c.faces.end());
+            if (c.tube > 0) c.tube += static_cast<int>(first_tube);
+            run.coverage.push_back(std::move(c));
+        }
+        first_tube += prepared[k].geometry.tubes.size();
+    }
     for (std::size_t k = 0; k < solids.size(); ++k) {
         out.cad_volumes.push_back(solids[k].model.volume());
         run.model_lines.push_back(fmt::format("{}: {} tube{}, St = {:.6g}", solids[k].name,

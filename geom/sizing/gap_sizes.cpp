@@ -7,10 +7,13 @@
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 
 #include "geom/model/model_occt.hpp"
+#include "geom/sizing/geometry_diagnosis.hpp"
 
 namespace tubemesh::geom {
 namespace {
@@ -46,9 +49,51 @@ double iso_length(const BRepAdaptor_Surface& s, bool along_u, double u0, double 
     return length;
 }
 
+// Leaves out the sources another one makes redundant: with h_i + g·|x_i - x_j| below h_j (by
+// more than rounding), source j never gives the size field's minimum (size_field.hpp), so the
+// field is the same without it. Around a wall the gap widens faster than g, so most sources go,
+// and the field's queries, whose cost grows with the sources in reach of a large one, stay cheap.
+// Only dominating sources in the neighbouring cells of a grid of cell `cell` are looked for.
+std::vector<SizeSource> without_redundant(std::vector<SizeSource> sources, double growth, double cell) {
+    std::stable_sort(sources.begin(), sources.end(),
+                     [](const SizeSource& a, const SizeSource& b) { return a.size < b.size; });
+    using Key = std::array<long long, 3>;
+    const auto key = [&](const Vec3& p) {
+        return Key{static_cast<long long>(std::floor(p.x / cell)), static_cast<long long>(std::floor(p.y / cell)),
+                   static_cast<long long>(std::floor(p.z / cell))};
+    };
+    std::map<Key, std::vector<std::size_t>> grid;  // kept sources per cell
+    std::vector<SizeSource> kept;
+    for (const SizeSource& s : sources) {
+        const Key k = key(s.point);
+        bool redundant = false;
+        for (long long dx = -1; dx <= 1 && !redundant; ++dx)
+            for (long long dy = -1; dy <= 1 && !redundant; ++dy)
+                for (long long dz = -1; dz <= 1 && !redundant; ++dz) {
+                    const auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
+                    if (it == grid.end()) continue;
+                    for (std::size_t i : it->second) {
+                        const SizeSource& o = kept[i];
+                        const double dx2 = o.point.x - s.point.x, dy2 = o.point.y - s.point.y,
+                                     dz2 = o.point.z - s.point.z;
+                        const double d = std::sqrt(dx2 * dx2 + dy2 * dy2 + dz2 * dz2);
+                        if (o.size + growth * d < s.size * (1 - 1e-9)) {
+                            redundant = true;
+                            break;
+                        }
+                    }
+                }
+        if (redundant) continue;
+        grid[k].push_back(kept.size());
+        kept.push_back(s);
+    }
+    return kept;
+}
+
 }  // namespace
 
-std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<HoleGroup>& holes, double size) {
+std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<HoleGroup>& holes, double size,
+                                         double growth) {
     std::vector<SizeSource> out;
     for (const HoleGroup& group : holes) {
         if (group.near_faces.empty()) continue;
@@ -77,7 +122,7 @@ std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<H
                         double fu, fv;
                         foot.LowerDistanceParameters(fu, fv);
                         if (n.inside->Perform(gp_Pnt2d(fu, fv)) == TopAbs_OUT) continue;
-                        const double d = foot.LowerDistance();
+                        const double d = std::max(foot.LowerDistance(), kThinnestRing * group.radius);
                         const gp_Pnt q = foot.NearestPoint();
                         out.push_back({{p.X(), p.Y(), p.Z()}, d});
                         out.push_back({{q.X(), q.Y(), q.Z()}, d});
@@ -85,7 +130,7 @@ std::vector<SizeSource> gap_size_sources(const Model& model, const std::vector<H
                 }
         }
     }
-    return out;
+    return out.empty() ? out : without_redundant(std::move(out), growth, size / 4);
 }
 
 }  // namespace tubemesh::geom

@@ -212,8 +212,8 @@ std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes, 
     for (const TubeRejection& rejected : tubes.rejected) {
         HoleGroup h;
         h.faces = rejected.faces;
-        h.radius = std::numeric_limits<double>::infinity();
-        for (int f : rejected.faces) {
+        h.radius = rejected.radius > 0 ? rejected.radius : std::numeric_limits<double>::infinity();
+        for (int f : rejected.radius > 0 ? std::vector<int>{} : rejected.faces) {
             const BRepAdaptor_Surface surface(face_of(model, f));
             if (surface.GetType() == GeomAbs_Cylinder)
                 h.radius = std::min(h.radius, surface.Cylinder().Radius());

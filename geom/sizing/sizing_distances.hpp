@@ -30,7 +30,7 @@ Clearances measure_clearances(const Model& model, const std::vector<TubeInfo>& t
 // within S). Found once per run for both.
 struct HoleGroup {
     std::vector<int> faces;       // the rejected group
-    double radius = 0;            // its smallest cylinder or torus (minor) radius
+    double radius = 0;            // its smallest cylinder or torus (minor) radius, or TubeRejection::radius
     std::vector<int> near_faces;  // not in the group, sharing no edge with it, boxes within reach
 };
 std::vector<HoleGroup> hole_groups(const Model& model, const TubeSearch& tubes, double size);

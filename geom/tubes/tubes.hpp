@@ -53,6 +53,9 @@ struct TubeRejection {
     // Curved faces only, two loops, but two of them meet along the axis at an angle: the hole
     // of pipes that overlap (or a slot milled with curved sides). It gets tets, not a ring.
     bool crease = false;
+    // A tube that lost its ring (geometry_diagnosis.hpp) keeps the radius the search measured;
+    // 0: a hole's radius is read from its cylinder and torus faces.
+    double radius = 0;
 };
 
 struct TubeSearch {

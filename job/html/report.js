@@ -42,6 +42,32 @@
     document.getElementById('table-legend').textContent = data.table_legend;
   }
 
+  // Per pipe: how much of its wall is under a hex ring, how thick the ring is, and why.
+  function fillPipes() {
+    const pipes = report.pipes;
+    if (!pipes || pipes.length === 0) return;
+    document.getElementById('ring-share').textContent =
+      'Hex rings cover ' + (100 * report.ring_share).toFixed(1) + ' % of the pipes\' wall area.';
+    const table = document.getElementById('pipes');
+    const head = document.createElement('tr');
+    ['ring', 'wall faces', 'wall area', 'under a ring', 'thickness', 'why thinned or none'].forEach(function (h) {
+      head.appendChild(text('th', h));
+    });
+    table.appendChild(head);
+    pipes.forEach(function (p) {
+      const tr = document.createElement('tr');
+      tr.appendChild(text('td', p.ring || 'none'));
+      tr.appendChild(text('td', p.faces.join(', ')));
+      tr.appendChild(text('td', p.wall_area.toPrecision(4), 'value'));
+      tr.appendChild(text('td', (100 * p.ring_share).toFixed(0) + ' %', 'value'));
+      const t = p.ring_thickness;
+      tr.appendChild(text('td', p.ring ? t.min.toPrecision(4) + ' to ' + t.max.toPrecision(4) : '-', 'value'));
+      tr.appendChild(text('td', p.reason));
+      table.appendChild(tr);
+    });
+    document.getElementById('pipes-section').hidden = false;
+  }
+
   // The paper's column beside this mesh's, for one of the paper's three examples.
   function fillPaperTable() {
     const paper = report.paper_table1;
@@ -214,6 +240,7 @@
   }
 
   fillSummary();
+  fillPipes();
   fillTable();
   fillPaperTable();
   drawPhases();

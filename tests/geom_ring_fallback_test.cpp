@@ -1,0 +1,165 @@
+// Pipes no hex ring fits are meshed with tets while the others keep their rings
+// (geom/sizing/geometry_diagnosis.hpp, geom/prepare.hpp): a T-junction, two pipes that cross, two
+// that touch, a pipe 0.1 r from a face and two pipes 0.25 r apart each mesh and pass the check, a
+// pipe far from them keeps its ring at the St it would have alone, and the report names the pipe
+// without a ring and why. A pipe tangent to a face along a line is refused: no conforming mesh
+// has a boundary edge on four faces.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "geom/builders/block_spec.hpp"
+#include "geom/mesh_file.hpp"
+#include "geom/run_retry.hpp"
+#include "tests/support/error_of.hpp"
+
+namespace {
+
+using namespace tubemesh;
+
+constexpr double kRadius = 0.1;
+
+geom::PipeSpec line(Vec3 a, Vec3 b, bool blind = false, double diameter = 2 * kRadius) {
+    geom::PipeSpec p;
+    p.kind = geom::PathKind::Line;
+    p.diameter = diameter;
+    p.points = {a, b};
+    p.blind = blind;
+    return p;
+}
+
+// A 4 x 4 x 4 box with `pipes` and, far from them and the faces, a pipe along x that must keep its
+// ring: the first pipe of the spec. (In a 3-wide box the pipes' loops would be too long for the
+// tube rule against the faces' edges.)
+geom::BlockSpec block(const std::string& name, std::vector<geom::PipeSpec> pipes) {
+    geom::BlockSpec spec;
+    spec.name = name;
+    spec.host.size = {4, 4, 4};
+    spec.check_clearance = false;
+    spec.pipes.push_back(line({0, 0.8, 0.8}, {4, 0.8, 0.8}));
+    for (geom::PipeSpec& p : pipes) spec.pipes.push_back(std::move(p));
+    return spec;
+}
+
+struct Case {
+    const char* name;
+    geom::BlockSpec spec;
+    const char* reason;  // in the report's reason for the pipe without a ring
+    const char* warning;
+};
+
+std::vector<Case> cases() {
+    const double r = kRadius, y = 3.2, z = 3;
+    return {
+        // A branch as wide as the main pipe would meet it in a curve that pinches (two cylinders
+        // of one radius meet in two ellipses crossing each other): a narrower branch, as usual.
+        {"t_junction",
+         block("T", {line({0, y, z}, {4, y, z}), line({2, 0, z}, {2, y, z}, true, 1.4 * kRadius)}),
+         "pipe walls meet", "pipe walls that meet each other"},
+        {"cross", block("cross", {line({0, y, z}, {4, y, z}), line({2, 0, z}, {2, 4, z})}), "pipe walls meet",
+         "pipe walls that meet each other"},
+        {"touching", block("touching", {line({0, y, z}, {4, y, z}), line({2, 0, z + 2 * r}, {2, 4, z + 2 * r})}),
+         "0 r from the pipe of wall face", "they touch"},
+        {"tenth_of_r_from_a_face", block("0.1 r", {line({0, y, 4 - 1.1 * r}, {4, y, 4 - 1.1 * r})}),
+         "0.1 r from face", "passes 0.01 from face"},
+        {"quarter_r_apart",
+         block("0.25 r", {line({0, y, z}, {4, y, z}), line({0, y, z + 2.25 * r}, {4, y, z + 2.25 * r})}),
+         "0.25 r from the pipe of wall face", "comes within 0.025 of"},
+    };
+}
+
+class RingFallback : public ::testing::TestWithParam<Case> {};
+
+TEST_P(RingFallback, MeshesWithTetsWhereNoRingFitsAndKeepsTheOtherRing) {
+    const Case& c = GetParam();
+    const geom::MeshRun run = geom::mesh_spec(c.spec);
+    const PipelineResult& r = run.result;
+    // mesh_spec ran the full check: no violation (volumes positive, faces matched, closed).
+    EXPECT_TRUE(r.check.ok());
+    EXPECT_EQ(r.reached, Stage::Tets);
+    EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
+
+    // The far pipe keeps its ring at the St it has alone: the smallest diameter, uncut.
+    ASSERT_EQ(run.tubes, 1u);
+    EXPECT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
+    EXPECT_GT(r.mesh.cell_count(CellKind::Pyramid), 0u);
+    EXPECT_DOUBLE_EQ(run.sweep_size, 2 * kRadius);
+
+    const auto ring = std::find_if(run.coverage.begin(), run.coverage.end(),
+                                   [](const geom::RingCoverage& p) { return p.tube == 1; });
+    ASSERT_NE(ring, run.coverage.end());
+    EXPECT_EQ(ring->share, 1.0);
+    EXPECT_DOUBLE_EQ(ring->thinnest, 2 * kRadius);
+    EXPECT_DOUBLE_EQ(ring->thickest, 2 * kRadius);
+
+    // Every other pipe is named, without a ring, with a reason; the first to lose it with c.reason.
+    int without = 0, named = 0;
+    for (const geom::RingCoverage& p : run.coverage) {
+        if (p.tube > 0) continue;
+        ++without;
+        EXPECT_EQ(p.share, 0.0);
+        EXPECT_GT(p.wall_area, 0.0);
+        EXPECT_FALSE(p.reason.empty());
+        named += p.reason.find(c.reason) != std::string::npos;
+    }
+    EXPECT_GE(without, 1);
+    EXPECT_GE(named, 1) << ::testing::PrintToString(run.model_lines);
+    EXPECT_LT(geom::ring_share(run.coverage), 1.0);
+    EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(), [&](const std::string& w) {
+        return w.find(c.warning) != std::string::npos && w.find("meshed with tetrahedra") != std::string::npos;
+    })) << ::testing::PrintToString(r.warnings);
+    // Sound tets, or a warning naming why not (the touching pipes: a gap down to 0; where pipes of
+    // one size cross, their walls meet at angles down to 0).
+    const bool explained = std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) {
+        return w.find("likely cause: a gap too narrow for sound tets") != std::string::npos ||
+               w.find("likely cause: pipe walls that meet") != std::string::npos;
+    });
+    EXPECT_TRUE(r.quality.tet_collapse.min >= 0.2 || explained) << r.quality.tet_collapse.min;
+    const auto line = std::find_if(run.model_lines.begin(), run.model_lines.end(), [](const std::string& l) {
+        return l.find("hex rings cover") != std::string::npos;
+    });
+    EXPECT_NE(line, run.model_lines.end());
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, RingFallback, ::testing::ValuesIn(cases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(RingFallback, APipeTangentToAFaceIsRefusedNamingTheLine) {
+    const double r = kRadius;
+    const std::string message = tubemesh::testing::error_of(
+        [&] { geom::mesh_spec(block("tangent", {line({0, 3.2, 4 - r}, {4, 3.2, 4 - r})})); });
+    EXPECT_NE(message.find("the solid's boundary touches itself along edge_"), std::string::npos) << message;
+    EXPECT_NE(message.find("move the pipe off the face"), std::string::npos) << message;
+}
+
+// A tube whose pyramids find no room after the retry's thinner rings loses its ring: the next
+// attempt drops it (by its wall faces, with the reason), and the other tube's thinner St moves
+// down to its new index.
+TEST(RingFallback, TheRetryDropsARingThatFoundNoRoomAtAnyStTried) {
+    geom::PreparedModel prepared;
+    prepared.plan.sweep_size = 0.1;
+    prepared.geometry.tubes.resize(3);
+    prepared.geometry.tubes[0].wall_faces = {7};
+    prepared.geometry.tubes[1].wall_faces = {9, 10};
+    prepared.geometry.tubes[2].wall_faces = {11};
+    geom::RunRetry retry{MeshOptions{}};
+    const RetryableFailure both("no room", RetryableFailure::Cause::PyramidRoom, {1, 2}, "the pyramids found no room");
+    for (int i = 0; i < geom::RunRetry::kSweepSteps; ++i) retry.after(both, prepared);
+    EXPECT_TRUE(retry.prepare_options().drop.empty());
+    const RetryableFailure one("no room", RetryableFailure::Cause::PyramidRoom, {1}, "the pyramids found no room");
+    retry.after(one, prepared);
+    const geom::PrepareOptions next = retry.prepare_options();
+    ASSERT_EQ(next.drop.size(), 1u);
+    EXPECT_EQ(next.drop[0].faces, (std::vector<int>{9, 10}));
+    EXPECT_NE(next.drop[0].warning.find("meshed with tetrahedra"), std::string::npos) << next.drop[0].warning;
+    EXPECT_NE(next.drop[0].reason.find("no room"), std::string::npos) << next.drop[0].reason;
+    // Tube 3 (now 2) keeps its ring, thinned four times; tube 1 keeps the plan's St.
+    ASSERT_EQ(next.discretize.tube_sweep_size.size(), 2u);
+    EXPECT_EQ(next.discretize.tube_sweep_size[0], 0.0);
+    EXPECT_NEAR(next.discretize.tube_sweep_size[1], 0.1 * 0.7 * 0.7 * 0.7 * 0.7, 1e-15);
+    EXPECT_EQ(retry.ring_reason(1).find("its pyramids found no room at St = 0.1"), 0u) << retry.ring_reason(1);
+}
+
+}  // namespace

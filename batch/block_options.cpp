@@ -35,7 +35,7 @@ void check_formats(const nlohmann::json& v, const std::string& where) {
 // Types here; ranges by run::mesh_options once the block's options are complete.
 void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
     if (key == "formats") return check_formats(v, where);
-    if (key == "move_apexes" || key == "slide_surface") {
+    if (key == "move_apexes" || key == "slide_surface" || key == "local_ring") {
         if (!v.is_boolean()) throw Error(fmt::format("{}: \"{}\" must be true or false, got {}", where, key, v.dump()));
         return;
     }
@@ -72,6 +72,7 @@ run::MeshSettings settings_of(const nlohmann::json& o) {
     s.chordal = o.at("chordal").get<double>();
     s.move_apexes = o.at("move_apexes").get<bool>();
     s.slide_surface = o.at("slide_surface").get<bool>();
+    s.local_ring = o.at("local_ring").get<bool>();
     s.pyramid_height = o.at("pyramid_height").get<double>();
     s.gradation = o.at("gradation").get<double>();
     s.tet_parts = o.at("tet_parts").get<int>();
@@ -97,6 +98,7 @@ nlohmann::json default_block_options() {
             {"tet_relax", d.tet_relax},
             {"move_apexes", d.move_apexes},
             {"slide_surface", d.slide_surface},
+            {"local_ring", d.local_ring},
             {"max_elements", nullptr},
             {"solid", nullptr},
             {"formats", {"msh"}},

@@ -25,18 +25,27 @@ constexpr double kHexConditionCeiling = 4;
 // it, with the likeliest cause: what thinned the ring, or the layers asked for.
 void add_quality_warnings(PipelineResult& r, const SizePlan& plan, const MeshOptions& options) {
     const QualitySummary& q = r.quality;
+    // The thinnest ring where the local ring thinned one (TubeRing::thinnest), and its tube.
+    const TubeRing* thin = nullptr;
+    for (const TubeRing& ring : r.sweep.rings)
+        if (ring.thinnest < ring.sweep_size && (!thin || ring.thinnest < thin->thinnest)) thin = &ring;
+    const std::string thinned =
+        thin ? fmt::format("the ring of tube {} thinned to {:.3g} where a face or another pipe is near", thin->tube + 1,
+                           thin->thinnest)
+             : std::string();
     if (q.tet_collapse.count > 0 && q.tet_collapse.min < kTetCollapseFloor)
         r.warnings.push_back(fmt::format(
             "the worst tetrahedron has collapse {:.3f}, below {}{}", q.tet_collapse.min, kTetCollapseFloor,
-            plan.changes.empty() ? std::string(": check the report's histogram before using the mesh")
-                                 : "; likely cause: the ring was thinned (" + plan.changes.back().rule + ": " +
-                                       plan.changes.back().reason + ")"));
+            !plan.changes.empty() ? "; likely cause: the ring was thinned (" + plan.changes.back().rule + ": " +
+                                        plan.changes.back().reason + ")"
+            : thin ? "; likely cause: " + thinned
+                   : std::string(": check the report's histogram before using the mesh")));
     if (q.hex_condition.count > 0 && q.hex_condition.max > kHexConditionCeiling)
         r.warnings.push_back(fmt::format(
             "the worst hexahedron has condition number {:.3g}, over {}: with {} layers across a ring of "
-            "thickness {:.3g}, graded {}, the innermost layer is too thin; use fewer --layers",
+            "thickness {:.3g}{}, graded {}, the innermost layer is too thin; use fewer --layers",
             q.hex_condition.max, kHexConditionCeiling, options.sweep.radial_layers, plan.sweep_size,
-            options.sweep.grading));
+            thin ? " (" + thinned + ")" : std::string(), options.sweep.grading));
 }
 
 // The report around a meshed attempt: geom's phases first, warnings, groups, sizes; at working

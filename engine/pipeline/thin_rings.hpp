@@ -2,8 +2,8 @@
 // What a ring thinned by its room (TubeData::room) asks of the layers in front of it, per outer
 // quad. The room leaves a gap of about 2.4 ring thicknesses ahead of a thinned ring (a ring
 // and its pyramids take 3.2 St towards a face, over a 95 % margin), whatever the quad's size:
-// its pyramid stands one ring thickness tall and the tets beside it are one thickness across,
-// which leaves the tets between the apexes and the face about as much again.
+// its pyramid stands 0.6 ring thicknesses tall and the tets in front of it are sized about two
+// thicknesses, the gap left between the apexes and the face.
 #include <vector>
 
 #include "engine/mesh/hybrid_mesh.hpp"

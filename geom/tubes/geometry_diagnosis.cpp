@@ -56,8 +56,8 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
     // pyramids take kFaceRoom St towards a face and kTubeRoom St between two pipes (sizing's guards).
     const double by_face = plan.dcb / kFaceRoom, by_pipes = plan.dc / kTubeRoom;
     const double thinnest = plan.local_ring ? kThinnestLocalRing : kThinnestRing;
-    // The distance advised: the limit rounded up (0.064 r and 0.084 r with the local ring).
-    const double face_advice = plan.local_ring ? 0.1 : 0.2, pipes_advice = plan.local_ring ? 0.1 : 0.25;
+    // The distance advised: the limit rounded up (0.064 r with the local ring).
+    const double face_advice = plan.local_ring ? 0.1 : 0.2;
     if (by_face <= by_pipes && plan.dcb_tube >= 0 && by_face < thinnest * radius(plan.dcb_tube)) {
         const double r = radius(plan.dcb_tube);
         const double dcb = shown(plan.dcb, r);
@@ -71,13 +71,13 @@ void diagnose_clearances(const TubeSearch& tubes, const SizePlan& plan) {
     if (by_pipes < by_face && plan.dc_tube_a >= 0) {
         const double r = std::min(radius(plan.dc_tube_a), radius(plan.dc_tube_b));
         const double dc = shown(plan.dc, r);
-        if (by_pipes < thinnest * r)
+        if (by_pipes < kThinnestRing * r)
             throw Error(fmt::format(
                 "{} and {} come within {:.3g} of each other ({:.2g} of the radius {:.3g}){}: hex rings that fit "
                 "between them would be under {:.3g} thick, less than {} of the radius, and take millions of "
                 "elements; keep the walls at least {:.3g} apart",
                 pipe(tubes, plan.dc_tube_a), pipe(tubes, plan.dc_tube_b), dc, dc / r, r,
-                dc == 0 ? " - they touch" : "", dc / kTubeRoom, thinnest, pipes_advice * r));
+                dc == 0 ? " - they touch" : "", dc / kTubeRoom, kThinnestRing, 0.25 * r));
     }
 }
 

@@ -15,8 +15,9 @@ namespace tubemesh::geom {
 // checks keep pipes half a diameter apart and a tenth of one from the faces (the random blocks
 // 3 and 2 diameters): the room for their rings is 0.0625 r at the least, so none is refused.
 inline constexpr double kThinnestRing = 0.05;
-// With the local ring (SizePlan::local_ring) only the ring's thinnest place is that thin, with
-// short steps there: the gap a pipe a tenth of its radius from a face leaves (0.03 r) meshes.
+// Towards a face with the local ring (SizePlan::local_ring): only the ring's thinnest place is
+// that thin, with short steps there, so the gap a pipe a tenth of its radius from a face leaves
+// (0.03 r) meshes. Between two pipes kThinnestRing stays: two thin rings face each other there.
 inline constexpr double kThinnestLocalRing = 0.02;
 
 // Throws for walls that meet or a wall tangent to a face (from the tube search's rejections of

@@ -388,6 +388,7 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
         {with([](json& m) { m["blocks"][0]["options"] = {{"move_apexes", 1}}; }), "\"move_apexes\" must be true or false"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"slide_surface", "yes"}}; }),
          "\"slide_surface\" must be true or false"},
+        {with([](json& m) { m["blocks"][0]["options"] = {{"local_ring", 0}}; }), "\"local_ring\" must be true or false"},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
         {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},
         {with([](json& m) { m["name"] = {{"size", 1}}; }), "\"name\" must be a string"},

@@ -45,6 +45,15 @@ void RunRetry::after(const RetryableFailure& failure, const SizePlan& plan, std:
             for (std::size_t t = 0; t < tube_count; ++t) tubes.push_back(static_cast<index_t>(t));
         for (index_t t : tubes) {
             if (t >= tube_count) throw Error(failure.what());
+            if (sweep_steps_[t] == kSweepSteps && options_.local_ring) {
+                // Thin rings facing each other can leave their pyramids no room at any St: the
+                // paper's one St, cut for the closest place of all, is the last resort.
+                options_.local_ring = false;
+                global_fallback_ = true;
+                sizes.assign(tube_count, 0.0);
+                sweep_steps_.assign(tube_count, 0);
+                return;
+            }
             if (sweep_steps_[t] == kSweepSteps)
                 throw Error(fmt::format("{} (tube {}'s ring was thinned to St = {:.6g} without success: move the pipe "
                                         "or give a larger --size)",
@@ -87,6 +96,9 @@ std::vector<std::string> RunRetry::warnings() const {
                                 "{} (the other rings keep St = {:.6g}; give --sweep-size to choose St yourself)",
                                 thinned.size() == 1 ? "" : "s", tube_list(thinned), plan_sweep_, sizes, plan_sweep_));
     }
+    if (global_fallback_)
+        w.push_back(fmt::format("the pyramids found no room in front of the locally thinned rings at any St: meshed "
+                                "with one St for every ring, cut by the paper's rules (as --global-ring)"));
     if (chordal_steps_ > 0)
         w.push_back(fmt::format("boundary recovery gave up at chordal tolerance {:.6g} on a valid front: meshed with "
                                 "--chordal {:.6g} (curved edges cut coarser)",
@@ -100,6 +112,7 @@ std::vector<std::string> RunRetry::report_lines() const {
         if (sweep_steps_[t] > 0)
             lines.push_back(fmt::format("  retry: tube {}: St {:.6g} -> {:.6g}: its pyramids found no room", t + 1,
                                         plan_sweep_, options_.sweep.tube_sweep_size[t]));
+    if (global_fallback_) lines.push_back("  retry: the local ring's pyramids found no room: one St for every ring");
     if (chordal_steps_ > 0)
         lines.push_back(fmt::format("  retry: chordal {:.6g} -> {:.6g}: boundary recovery gave up", chordal_first_,
                                     options_.chordal));

@@ -43,7 +43,8 @@ void check_value(const std::string& key, const nlohmann::json& v, const std::str
                 throw Error(fmt::format("{}: \"reverse_flow\" takes whole pipe numbers, got {}", where, k.dump()));
         return;
     }
-    if (key == "move_apexes" || key == "slide_surface" || key == "pipe_network") {
+    if (key == "move_apexes" || key == "slide_surface" || key == "pipe_network" ||
+        key == "local_ring") {
         if (!v.is_boolean()) throw Error(fmt::format("{}: \"{}\" must be true or false, got {}", where, key, v.dump()));
         return;
     }
@@ -80,6 +81,7 @@ run::MeshSettings settings_of(const nlohmann::json& o) {
     s.chordal = o.at("chordal").get<double>();
     s.move_apexes = o.at("move_apexes").get<bool>();
     s.slide_surface = o.at("slide_surface").get<bool>();
+    s.local_ring = o.at("local_ring").get<bool>();
     s.pyramid_height = o.at("pyramid_height").get<double>();
     s.gradation = o.at("gradation").get<double>();
     s.tet_parts = o.at("tet_parts").get<int>();
@@ -105,6 +107,7 @@ nlohmann::json default_block_options() {
             {"tet_relax", d.tet_relax},
             {"move_apexes", d.move_apexes},
             {"slide_surface", d.slide_surface},
+            {"local_ring", d.local_ring},
             {"max_elements", nullptr},
             {"solid", nullptr},
             {"formats", {"msh"}},

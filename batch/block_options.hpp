@@ -2,7 +2,7 @@
 // A block's meshing options as the manifest spells them, resolved over the built-in defaults:
 //
 //   size S, sweep_size St, circ n, layers L, axial_aspect, chordal, pyramid_height, gradation,
-//   tet_parts, tet_relax, move_apexes and slide_surface (true or false), max_elements, solid K
+//   tet_parts, tet_relax, move_apexes, slide_surface and local_ring (true or false), max_elements, solid K
 //   (null: automatic, as when left out),
 //   formats ["msh", "vtu", "inp", "html" (the block's HTML report)], time_limit (seconds per block; 0: none),
 //   pipe_network (true or false), film_coefficient, reverse_flow [pipe numbers] (the .inp's water

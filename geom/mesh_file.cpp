@@ -27,20 +27,28 @@ constexpr double kHexConditionCeiling = 4;
 void add_quality_warnings(PipelineResult& r, const PreparedModel& prepared, const MeshOptions& options) {
     const QualitySummary& q = r.quality;
     const SizePlan& plan = prepared.plan;
+    // The thinnest ring where the local ring thinned one (TubeRing::thinnest), and its tube.
+    const TubeRing* thin = nullptr;
+    for (const TubeRing& ring : r.sweep.rings)
+        if (ring.thinnest < ring.sweep_size && (!thin || ring.thinnest < thin->thinnest)) thin = &ring;
+    const std::string thinned =
+        thin ? fmt::format("the ring of tube {} thinned to {:.3g} where a face or another pipe is near", thin->tube + 1,
+                           thin->thinnest)
+             : std::string();
     if (q.tet_collapse.count > 0 && q.tet_collapse.min < kTetCollapseFloor)
         r.warnings.push_back(fmt::format(
             "the worst tetrahedron has collapse {:.3f}, below {}{}", q.tet_collapse.min, kTetCollapseFloor,
-            !prepared.flat_tets_cause.empty()
-                ? "; likely cause: " + prepared.flat_tets_cause
-            : plan.changes.empty() ? std::string(": check the report's histogram before using the mesh")
-                                   : "; likely cause: the ring was thinned (" + plan.changes.back().rule + ": " +
-                                         plan.changes.back().reason + ")"));
+            !prepared.flat_tets_cause.empty() ? "; likely cause: " + prepared.flat_tets_cause
+            : !plan.changes.empty()           ? "; likely cause: the ring was thinned (" + plan.changes.back().rule +
+                                          ": " + plan.changes.back().reason + ")"
+            : thin ? "; likely cause: " + thinned
+                   : std::string(": check the report's histogram before using the mesh")));
     if (q.hex_condition.count > 0 && q.hex_condition.max > kHexConditionCeiling)
         r.warnings.push_back(fmt::format(
             "the worst hexahedron has condition number {:.3g}, over {}: with {} layers across a ring of "
-            "thickness {:.3g}, graded {}, the innermost layer is too thin; use fewer --layers",
+            "thickness {:.3g}{}, graded {}, the innermost layer is too thin; use fewer --layers",
             q.hex_condition.max, kHexConditionCeiling, options.sweep.radial_layers, plan.sweep_size,
-            options.sweep.grading));
+            thin ? " (" + thinned + ")" : std::string(), options.sweep.grading));
 }
 
 // The report around a meshed attempt: geom's phases first, warnings, groups, sizes; at working

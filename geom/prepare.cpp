@@ -224,7 +224,8 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         for (;;) {
             p.plan = plan_sizes(model, p.tubes.tubes, options.sizing);
             RingDrop drop;
-            const int t = tube_without_room(p.tubes, p.plan, thinnest_ring(options.sizing.local_ring), drop);
+            const int t = tube_without_room(p.tubes, p.plan, thinnest_ring(options.sizing.local_ring),
+                                              thinnest_ring_to_face(options.sizing.local_ring), drop);
             if (t < 0) break;
             p.tubes.tubes.erase(p.tubes.tubes.begin() + t);
             p.dropped.push_back(std::move(drop));

@@ -57,7 +57,16 @@ void RunRetry::after(const RetryableFailure& failure, const PreparedModel& prepa
                 ++sweep_steps_[t];
                 continue;
             }
-            // The failure names no tube when no ring holds the front: nothing to drop then.
+            // The failure names no tube when no ring holds the front: nothing to drop then. Thin
+            // rings facing each other can leave their pyramids no room at any St: the paper's one
+            // St, cut for the closest place of all, is the last resort.
+            if (failure.tubes.empty() && options_.local_ring) {
+                options_.local_ring = false;
+                global_fallback_ = true;
+                sizes.assign(tube_count, 0.0);
+                sweep_steps_.assign(tube_count, 0);
+                return;
+            }
             if (failure.tubes.empty())
                 throw Error(fmt::format("{} (the rings were thinned to St = {:.6g} without success: move the pipes "
                                         "or give a larger --size)",
@@ -111,6 +120,9 @@ std::vector<std::string> RunRetry::warnings() const {
                                 "{} (the other rings keep St = {:.6g}; give --sweep-size to choose St yourself)",
                                 thinned.size() == 1 ? "" : "s", tube_list(thinned), plan_sweep_, sizes, plan_sweep_));
     }
+    if (global_fallback_)
+        w.push_back(fmt::format("the pyramids found no room in front of the locally thinned rings at any St: meshed "
+                                "with one St for every ring, cut by the paper's rules (as --global-ring)"));
     if (chordal_steps_ > 0)
         w.push_back(fmt::format("boundary recovery gave up at chordal tolerance {:.6g} on a valid front: meshed with "
                                 "--chordal {:.6g} (curved edges cut coarser)",
@@ -130,6 +142,7 @@ std::vector<std::string> RunRetry::report_lines() const {
         if (sweep_steps_[t] > 0)
             lines.push_back(fmt::format("  retry: tube {}: St {:.6g} -> {:.6g}: its pyramids found no room", t + 1,
                                         plan_sweep_, options_.sweep.tube_sweep_size[t]));
+    if (global_fallback_) lines.push_back("  retry: the local ring's pyramids found no room: one St for every ring");
     if (chordal_steps_ > 0)
         lines.push_back(fmt::format("  retry: chordal {:.6g} -> {:.6g}: boundary recovery gave up", chordal_first_,
                                     options_.chordal));

@@ -58,6 +58,7 @@ public:
 private:
     MeshOptions options_;     // the next attempt's
     bool sweep_given_ = false;
+    bool global_fallback_ = false;  // the local ring gave way to the paper's one St
     double chordal_first_ = 0;  // the tolerance of the first attempt
     int chordal_steps_ = 0;
     std::optional<std::string> chordal_failure_;  // the first recovery failure's message

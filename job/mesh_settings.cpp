@@ -79,6 +79,7 @@ void apply_economy(MeshSettings& s, GivenSettings given) {
     if (!given.layers) s.layers = kEconomy.layers;
     if (!given.axial_aspect) s.axial_aspect = kEconomy.axial_aspect;
     if (!given.chordal) s.chordal = kEconomy.chordal;
+    s.local_ring = kEconomy.local_ring;
 }
 
 std::string stage_names() {

@@ -46,6 +46,7 @@ struct EconomyPreset {
     double sweep_share = 0.42;
     double axial_aspect = 2;
     double chordal = 0.02;
+    bool local_ring = false;  // the paper's one St, cut by its rules, as in its Table 1
 };
 inline constexpr EconomyPreset kEconomy{};
 

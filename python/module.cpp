@@ -41,7 +41,8 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
                                  std::optional<double> sweep_size, std::optional<int> circ, std::optional<int> layers,
                                  std::optional<double> axial_aspect, std::optional<double> chordal, double pyramid_height,
                                  double gradation, std::optional<int> threads, int tet_parts, int tet_relax,
-                                 bool move_apexes, bool slide_surface, std::optional<double> max_elements, std::optional<int> solid,
+                                 bool move_apexes, bool slide_surface, bool local_ring, std::optional<double> max_elements,
+                                 std::optional<int> solid,
                                  const std::string& until,
                                  const py::object& progress) {
     run::MeshSettings s;
@@ -60,6 +61,7 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
     s.tet_relax = tet_relax;
     s.move_apexes = move_apexes;
     s.slide_surface = slide_surface;
+    s.local_ring = local_ring;
     s.max_elements = max_elements;
     s.solid = solid;
     s.until = run::stage_named(until, run::Naming::Keywords);
@@ -138,7 +140,7 @@ PYBIND11_MODULE(tubemesh, m) {
           py::arg("pyramid_height") = d.pyramid_height,
           py::arg("gradation") = d.gradation, py::arg("threads") = py::none(), py::arg("tet_parts") = d.tet_parts,
           py::arg("tet_relax") = d.tet_relax, py::arg("move_apexes") = d.move_apexes,
-          py::arg("slide_surface") = d.slide_surface,
+          py::arg("slide_surface") = d.slide_surface, py::arg("local_ring") = d.local_ring,
           py::arg("max_elements") = py::none(), py::arg("solid") = py::none(),
           py::arg("until") = std::string(stage_name(d.until)), py::arg("progress") = py::none(),
           R"doc(Meshes a CAD file (.step .stp .iges .igs .brep) or a built-in block (a preset name, see presets()).
@@ -148,7 +150,7 @@ size (S: bounding-box diagonal / 25, at least 1.3 St), sweep_size (St: the small
 diameter, cut by the paper's rules), circ (n: the multiple of 4 nearest 2 pi (r + St/2) / St, at
 least 8), layers (2), axial_aspect (1.5), chordal (0.008125), threads (all cores), max_elements
 (what the memory this process may use holds; the real counts are capped too), solid (the file's only solid); slide_surface=False is
---fixed-surface. economy=True is --economy: the
+--fixed-surface; local_ring=False is --global-ring. economy=True is --economy: the
 paper's ring (circ 4, layers 2, axial_aspect 2, chordal 0.02, St a share of S) where those are None. until: the last stage ('sweep', 'surface', 'pyramids', 'tets'). progress: a callable
 (phase, done, total), called with the GIL from the meshing threads.
 

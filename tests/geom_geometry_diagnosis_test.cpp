@@ -27,7 +27,7 @@ geom::TubeSearch two_pipes() {
 
 std::string warning_of(const geom::SizePlan& plan, int expected_tube) {
     geom::RingDrop drop;
-    EXPECT_EQ(geom::tube_without_room(two_pipes(), plan, geom::kThinnestSharedRing, drop), expected_tube);
+    EXPECT_EQ(geom::tube_without_room(two_pipes(), plan, geom::kThinnestSharedRing, geom::kThinnestSharedRing, drop), expected_tube);
     EXPECT_NE(drop.warning.find("meshed with tetrahedra"), std::string::npos) << drop.warning;
     return drop.warning;
 }
@@ -61,7 +61,7 @@ TEST(GeometryDiagnosis, OfTwoClosePipesTheOneKeptHasRoomAgainstTheOther) {
     EXPECT_EQ(warning_of(plan, 1).find("the pipe of wall face 8 comes within"), 0u);
     plan.dc = 0.05;  // far enough for both rings
     geom::RingDrop drop;
-    EXPECT_EQ(geom::tube_without_room(two_pipes(), plan, geom::kThinnestSharedRing, drop), -1);
+    EXPECT_EQ(geom::tube_without_room(two_pipes(), plan, geom::kThinnestSharedRing, geom::kThinnestSharedRing, drop), -1);
 }
 
 TEST(GeometryDiagnosis, PipeTouchingAFaceIsZeroFromItNotNegative) {

@@ -12,14 +12,12 @@
 
 #include "engine/check/mesh_check.hpp"
 #include "engine/core/parallelism.hpp"
+#include "engine/core/timing.hpp"
+#include "engine/pipeline/thin_rings.hpp"
 
 namespace tubemesh {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // One solid's pyramids and tets, in a mesh of its own: its boundary's points first (local id i
 // is point global[i] of the whole mesh), then what its steps add.
@@ -28,6 +26,7 @@ struct SolidWork {
     HybridMesh mesh;
     std::vector<index_t> boundary;  // local ids, 3 per triangle, normal out of the solid
     std::vector<index_t> front_quads, obstacle_quads;
+    std::vector<double> front_scale;  // per front quad, its apex share over a thin ring (thin_rings.hpp)
     std::vector<index_t> tet_front;
     PyramidStats pyramid_stats;
     tets::TetStepStats tet_stats;
@@ -59,7 +58,7 @@ void append_range(const std::vector<index_t>& from, index_t first, index_t count
 
 // The solid's boundary triangles and ring quads, renumbered into a mesh of its own.
 SolidWork gather_solid(const PipelineResult& whole, const std::vector<index_t>& tri_face,
-                       const AssemblySolidInput& solid) {
+                       const AssemblySolidInput& solid, const std::vector<double>& apex) {
     std::unordered_map<index_t, char> flip;
     for (std::size_t i = 0; i < solid.faces.size(); ++i) flip[solid.faces[i]] = solid.reversed[i];
     SolidWork w;
@@ -75,6 +74,9 @@ SolidWork gather_solid(const PipelineResult& whole, const std::vector<index_t>& 
         const TubeRing& ring = whole.sweep.rings[k];
         append_range(whole.sweep.outer_quads, ring.first_lateral_quad, (ring.stations - 1) * ring.circumferential,
                      w.front_quads);
+        if (!apex.empty())
+            w.front_scale.insert(w.front_scale.end(), apex.begin() + ring.first_lateral_quad,
+                                 apex.begin() + ring.first_lateral_quad + (ring.stations - 1) * ring.circumferential);
         append_range(whole.sweep.end_quads, ring.first_end_quad, 2 * ring.radial_layers * ring.circumferential,
                      w.obstacle_quads);
     }
@@ -101,6 +103,7 @@ void run_solid_pyramids(SolidWork& w, const MeshOptions& opt) {
         in.front_quads = w.front_quads;
         in.boundary_triangles = w.boundary;
         in.obstacle_quads = w.obstacle_quads;
+        in.front_scale = w.front_scale;
         in.region = 0;
         p = build_pyramids(w.mesh, in, opt.pyramids);
     }
@@ -272,7 +275,8 @@ AssemblyResult run_assembly(const AssemblyInput& input, const MeshOptions& optio
 
     const std::vector<index_t> tri_face = triangle_faces(r.mesh);
     std::vector<SolidWork> work;
-    for (const AssemblySolidInput& s : input.solids) work.push_back(gather_solid(r, tri_face, s));
+    const ThinRingShares thin = thin_ring_shares(r.mesh, r.sweep, options.pyramids.height_factor);
+    for (const AssemblySolidInput& s : input.solids) work.push_back(gather_solid(r, tri_face, s, thin.apex));
     const double far_size = options.tets.far_size > 0 ? options.tets.far_size : input.whole.geometry.size;
 
     auto t0 = Clock::now();

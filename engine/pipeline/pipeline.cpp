@@ -12,6 +12,7 @@
 #include "engine/pipeline/pipe_stations.hpp"
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
+#include "engine/pipeline/thin_rings.hpp"
 #include "engine/pipeline/tet_size_caps.hpp"
 #include "engine/core/parallelism.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
@@ -167,8 +168,9 @@ TooLargeLeft run_surface(const PipelineInput& in, const MeshOptions& opt, Pipeli
     // still: two passes were enough on every block measured (bench/results/tuning-notes.md),
     // and the last pass is kept whatever it leaves.
     const index_t first_triangle = out.mesh.face_count(FaceKind::Tri);
+    const ThinRingShares thin = thin_ring_shares(out.mesh, out.sweep, opt.pyramids.height_factor);
     const TetSizeCaps too_large(out.mesh, out.sweep.outer_quads, tet_far_size(in, opt), opt.tets.gradation,
-                                opt.size_growth, out.sweep.outer_quad_scale);
+                                opt.size_growth, thin.tet_size);
     SurfacePass pass;
     int passes = 0;
     std::size_t left = 0;  // triangles still too large after the last pass
@@ -222,7 +224,8 @@ void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineRe
     in.front_quads = out.sweep.outer_quads;
     in.boundary_triangles = boundary;
     in.obstacle_quads = out.sweep.end_quads;
-    in.front_scale = out.sweep.outer_quad_scale;
+    const ThinRingShares thin = thin_ring_shares(mesh, out.sweep, opt.pyramids.height_factor);
+    in.front_scale = thin.apex;
     in.region = mesh.region_id("pyramids");
     in.sweep_size = opt.sweep.sweep_size > 0 ? opt.sweep.sweep_size : input.geometry.sweep_size;
     PyramidResult p;

@@ -88,10 +88,11 @@ struct MeshOptions {
     // > 0: when sweep_size is 0, St starts from this share of S instead of the tube diameter
     // (the economy preset); the rules still cut it. 0 (default): unused.
     double sweep_share = 0;
-    // true: each ring thins only where a face or a tube comes near it, per place and direction
-    // (geom/sizing/ring_room.hpp), and St stays; false (default): the paper's one St for every
-    // ring, cut by the rules for the closest place of all.
-    bool local_ring = false;
+    // true (default): each ring thins only where a face or a tube comes near it, per place and
+    // direction (geom/sizing/ring_room.hpp), with shorter steps along it there, and St stays; a
+    // tube with room everywhere gets the paper's ring. false: the paper's one St for every ring,
+    // cut by the rules for the closest place of all.
+    bool local_ring = true;
     // n, nodes around every tube. 0 (default): the multiple of 4 nearest to the ring's
     // mid-circumference over St, at least 8 (circumferential_count in engine/sweep/sweep.hpp,
     // which says why; the paper's 4 only when given).

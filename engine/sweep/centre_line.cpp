@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "engine/core/types.hpp"
@@ -49,9 +50,40 @@ Station exact(const TubeStation& a) {
     return s;
 }
 
+// Station positions along a line of this length where the wanted step is local_step(s) (at most
+// `step`, positive): the whole number of steps nearest to the integral of 1 / local_step, each
+// step taking an equal share of that integral, so the spacing follows the wanted step and
+// changes as smoothly as it does.
+std::vector<double> graded_positions(double length, double step, const std::function<double(double)>& local_step) {
+    // Fine enough that a step's share of the integral is found to a small part of it.
+    const int samples = std::clamp(static_cast<int>(std::ceil(16 * length / step)), 16, 1 << 20);
+    std::vector<double> at(static_cast<std::size_t>(samples) + 1), sum(at.size(), 0.0);
+    double before = 1.0 / std::clamp(local_step(0.0), 1e-12 * step, step);
+    for (int k = 0; k <= samples; ++k) {
+        at[static_cast<std::size_t>(k)] = length * k / samples;
+        if (k == 0) continue;
+        const double now = 1.0 / std::clamp(local_step(at[static_cast<std::size_t>(k)]), 1e-12 * step, step);
+        sum[static_cast<std::size_t>(k)] = sum[static_cast<std::size_t>(k) - 1] + 0.5 * (before + now) * (length / samples);
+        before = now;
+    }
+    const int layers = std::max(1, static_cast<int>(std::lround(sum.back())));
+    std::vector<double> where{0.0};
+    std::size_t k = 0;
+    for (int i = 1; i < layers; ++i) {
+        const double target = sum.back() * i / layers;
+        while (k + 1 < sum.size() && sum[k + 1] < target) ++k;
+        const double span = sum[k + 1] - sum[k];
+        const double u = span > 0 ? (target - sum[k]) / span : 0.0;
+        where.push_back(at[k] + u * (at[k + 1] - at[k]));
+    }
+    where.push_back(length);
+    return where;
+}
+
 }  // namespace
 
-CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const Vec3& first_node) {
+CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const Vec3& first_node,
+                                 const std::function<double(double)>& local_step) {
     if (input.size() < 2) throw Error("the centre line has fewer than two stations");
     std::vector<double> at(input.size(), 0.0);  // chord length from the first station
     for (std::size_t i = 0; i < input.size(); ++i) {
@@ -67,7 +99,11 @@ CentreLine resample_centre_line(std::span<const TubeStation> input, double step,
     line.length = at.back();
     line.frame_fallback = !std::all_of(input.begin(), input.end(), usable_reference);
 
-    const int layers = std::max(1, static_cast<int>(std::lround(line.length / step)));
+    const std::vector<double> where = local_step ? graded_positions(line.length, step, local_step)
+                                                 : std::vector<double>{};
+    const int layers = local_step ? static_cast<int>(where.size()) - 1
+                                  : std::max(1, static_cast<int>(std::lround(line.length / step)));
+    const auto position = [&](int i) { return local_step ? where[static_cast<std::size_t>(i)] : line.length * i / layers; };
     line.stations.reserve(static_cast<std::size_t>(layers) + 1);
     std::size_t seg = 0;
     for (int i = 0; i <= layers; ++i) {
@@ -77,12 +113,12 @@ CentreLine resample_centre_line(std::span<const TubeStation> input, double step,
         } else if (i == layers) {
             st = exact(input.back());
         } else {
-            const double s = line.length * i / layers;
+            const double s = position(i);
             while (seg + 2 < input.size() && at[seg + 1] <= s) ++seg;
             const double chord = at[seg + 1] - at[seg];
             st = between(input[seg], input[seg + 1], chord, std::clamp((s - at[seg]) / chord, 0.0, 1.0));
         }
-        st.s = line.length * i / layers;
+        st.s = position(i);
         if (!line.frame_fallback) st.reference = orthonormal_to(st.reference, st.tangent);
         line.stations.push_back(st);
     }

@@ -1,5 +1,6 @@
 #pragma once
 // A tube's centre line resampled into equal steps, with a frame at every station.
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -32,7 +33,11 @@ struct CentreLine {
 //
 // When an input reference is zero, not finite or within 30 degrees of its tangent, all are
 // replaced by rotation-minimising frames started at `first_node` (ring1[0]).
+// With `local_step` (the step wanted at arc length s, at most `step`), the stations are spaced
+// by it instead (graded_positions in the .cpp): a ring thinned somewhere gets shorter steps
+// there only.
 // Throws tubemesh::Error for zero tangents or repeated stations.
-CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const Vec3& first_node);
+CentreLine resample_centre_line(std::span<const TubeStation> input, double step, const Vec3& first_node,
+                                const std::function<double(double)>& local_step = {});
 
 }  // namespace tubemesh::sweep

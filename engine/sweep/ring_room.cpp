@@ -43,6 +43,22 @@ double room_scale(const RingRoom& room, double sweep_size, double s, const Vec3&
     return std::min(1.0, room_thickness(room, s, dir) / sweep_size);
 }
 
+double thinnest_at(const RingRoom& room, double s) {
+    if (room.empty()) return std::numeric_limits<double>::infinity();
+    const auto& ss = room.s;
+    const std::size_t d = static_cast<std::size_t>(room.directions);
+    const auto row_min = [&](std::size_t i) {
+        return *std::min_element(room.thickness.begin() + static_cast<std::ptrdiff_t>(i * d),
+                                 room.thickness.begin() + static_cast<std::ptrdiff_t>((i + 1) * d));
+    };
+    if (ss.size() == 1 || s <= ss.front()) return row_min(0);
+    if (s >= ss.back()) return row_min(ss.size() - 1);
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(ss.begin(), ss.end(), s) - ss.begin()) - 1;
+    const double span = ss[i + 1] - ss[i];
+    const double w = span > 0 ? (s - ss[i]) / span : 0.0;
+    return (1 - w) * row_min(i) + w * row_min(i + 1);
+}
+
 double thinnest(const RingRoom& room) {
     if (room.empty()) return std::numeric_limits<double>::infinity();
     return *std::min_element(room.thickness.begin(), room.thickness.end());

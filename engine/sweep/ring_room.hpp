@@ -14,6 +14,10 @@ double room_thickness(const RingRoom& room, double s, const Vec3& dir);
 // min(1, room_thickness / sweep_size): what the ring's radial offsets are multiplied by there.
 double room_scale(const RingRoom& room, double sweep_size, double s, const Vec3& dir);
 
+// Smallest thickness the room allows around the ring at arc length s (linear between samples);
+// +infinity for an empty room.
+double thinnest_at(const RingRoom& room, double s);
+
 // Smallest thickness the room allows anywhere; +infinity for an empty room.
 double thinnest(const RingRoom& room);
 

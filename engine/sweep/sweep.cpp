@@ -63,11 +63,19 @@ void rethrow_first(const std::vector<std::exception_ptr>& failed, TubeOf tube_of
 void local_thickness(const std::vector<TubePlan>& plans, const std::vector<std::vector<double>>& scales,
                      SweepResult& result) {
     const bool any = std::any_of(scales.begin(), scales.end(), [](const auto& v) { return !v.empty(); });
-    if (any) result.outer_quad_scale.assign(result.outer_quads.size() / 4, 1.0);
+    if (any) {
+        result.outer_quad_scale.assign(result.outer_quads.size() / 4, 1.0);
+        result.outer_quad_thickness.assign(result.outer_quads.size() / 4, 0.0);
+    }
     for (std::size_t t = 0; t < plans.size(); ++t) {
         TubeRing& ring = result.rings[t];
         ring.thinnest = ring.thickest = plans[t].sweep_size;
         const std::vector<double>& s = scales[t];
+        if (any)
+            for (std::size_t q = 0; q + 1 < ring.stations; ++q)
+                for (std::size_t k = 0; k < ring.circumferential; ++k)
+                    result.outer_quad_thickness[ring.first_lateral_quad + q * ring.circumferential + k] =
+                        plans[t].sweep_size;
         if (s.empty()) continue;
         const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
         ring.thinnest = *lo * plans[t].sweep_size;
@@ -76,8 +84,9 @@ void local_thickness(const std::vector<TubePlan>& plans, const std::vector<std::
         for (std::size_t i = 0; i + 1 < ring.stations; ++i)
             for (std::size_t k = 0; k < n; ++k) {
                 const std::size_t k1 = (k + 1) % n;
-                result.outer_quad_scale[ring.first_lateral_quad + i * n + k] =
-                    0.25 * (s[i * n + k] + s[i * n + k1] + s[(i + 1) * n + k] + s[(i + 1) * n + k1]);
+                const std::size_t q = ring.first_lateral_quad + i * n + k;
+                result.outer_quad_scale[q] = 0.25 * (s[i * n + k] + s[i * n + k1] + s[(i + 1) * n + k] + s[(i + 1) * n + k1]);
+                result.outer_quad_thickness[q] = result.outer_quad_scale[q] * plans[t].sweep_size;
             }
     }
 }

@@ -193,6 +193,8 @@ struct SweepResult {
     // Per outer quad, the ring's thickness under it over St (the mean of its corners'), when
     // some ring is thinner than St somewhere; empty when every ring has its full St.
     std::vector<double> outer_quad_scale;
+    // The same quads' ring thickness in length (that share times the ring's St); empty with it.
+    std::vector<double> outer_quad_thickness;
     SweepStats stats;
 };
 

@@ -104,7 +104,21 @@ TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& sur
     p.sweep_size = tube_sweep_size(index, options, p.radius);
     p.offsets = radial_offsets(p.sweep_size, p.layers, options.grading);
     p.step = axial_step(p.radius, p.offsets, p.n, options.axial_aspect, options.max_condition);
-    p.line = resample_centre_line(tube.stations, p.step, ring1.front());
+    p.room = &tube.room;
+    p.thin = thinnest(tube.room) < p.sweep_size;
+    if (p.thin) {
+        // Where the ring is thin its outer quads are narrow and the gap ahead is thin: the step
+        // follows the narrowest outer side there (no condition cap: a thin ring's hexes are
+        // set by their thin layer, which a shorter step does not mend), never longer than St's.
+        const double sine = std::sin(std::numbers::pi / p.n);
+        const auto local = [&p, &tube, sine, aspect = options.axial_aspect](double s) {
+            const double t = std::min(p.sweep_size, thinnest_at(tube.room, s));
+            return std::min(p.step, aspect * 2 * (p.radius + t) * sine);
+        };
+        p.line = resample_centre_line(tube.stations, p.step, ring1.front(), local);
+    } else {
+        p.line = resample_centre_line(tube.stations, p.step, ring1.front());
+    }
 
     const Station& first = p.line.stations.front();
     const Station& last = p.line.stations.back();
@@ -123,8 +137,6 @@ TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& sur
         p.angle_offset[1].push_back(wrap_angle(p.ends[1].angle[kk] - p.base[kk] - p.twist));
     }
 
-    p.room = &tube.room;
-    p.thin = thinnest(tube.room) < p.sweep_size;
     for (int e = 0; e < 2; ++e) {
         const Station& st = e == 0 ? first : last;
         const EndSection& end = p.ends[static_cast<std::size_t>(e)];

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <unordered_set>
 
+#include "engine/core/timing.hpp"
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/core/vec3_ops.hpp"
 #include "geom/assembly/assembly_occt.hpp"
@@ -23,10 +24,6 @@
 namespace tubemesh::geom {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The assembly's faces and edges as one Model: what the SurfaceMaps and the group descriptions
 // are made from (a shared face as the first solid that has it sees it). Its solid holds every

@@ -108,13 +108,14 @@ void drop_branches(TubeSearch& tubes, std::vector<RingDrop>& dropped) {
     }
 }
 
-int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thinnest, RingDrop& drop) {
+int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thinnest, double thinnest_to_face,
+                      RingDrop& drop) {
     if (tubes.tubes.empty()) return -1;
     auto tube = [&](int t) -> const TubeInfo& { return tubes.tubes[static_cast<std::size_t>(t)]; };
     // The thickest ring the distances allow, whatever St was asked for: a ring and its
     // pyramids take kFaceRoom St towards a face and kTubeRoom St between two pipes (sizing's guards).
     const double by_face = plan.dcb / kFaceRoom, by_pipes = plan.dc / kTubeRoom;
-    if (by_face <= by_pipes && plan.dcb_tube >= 0 && by_face < thinnest * tube(plan.dcb_tube).radius_min) {
+    if (by_face <= by_pipes && plan.dcb_tube >= 0 && by_face < thinnest_to_face * tube(plan.dcb_tube).radius_min) {
         const TubeInfo& t = tube(plan.dcb_tube);
         const double r = t.radius_min, dcb = shown(plan.dcb, r);
         drop = drop_of(
@@ -123,7 +124,7 @@ int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thin
                         "would be under {:.3g} thick, less than {} of the radius: no hex ring, meshed with "
                         "tetrahedra; for a hex ring, move the pipe at least {:.2g} away from face {}",
                         pipe(t), dcb, plan.dcb_face, dcb / r, r, dcb == 0 ? " - it touches the face" : "",
-                        dcb / kFaceRoom, thinnest, 1.05 * kFaceRoom * thinnest * r, plan.dcb_face));
+                        dcb / kFaceRoom, thinnest_to_face, 1.05 * kFaceRoom * thinnest_to_face * r, plan.dcb_face));
         return plan.dcb_tube;
     }
     if (by_pipes < by_face && plan.dc_tube_a >= 0) {

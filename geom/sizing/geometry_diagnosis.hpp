@@ -23,6 +23,13 @@ namespace tubemesh::geom {
 inline constexpr double kThinnestRing = 0.05;
 inline constexpr double kThinnestSharedRing = 0.1;
 inline double thinnest_ring(bool local_ring) { return local_ring ? kThinnestRing : kThinnestSharedRing; }
+// Towards a face a locally thinned ring is that thin only at its thinnest place, with short steps
+// there, so a pipe a tenth of its radius from a face (a gap of 0.03 r for the ring) keeps its
+// ring. Between two pipes thinnest_ring stays: two thin rings face each other there.
+inline constexpr double kThinnestLocalRingToFace = 0.02;
+inline double thinnest_ring_to_face(bool local_ring) {
+    return local_ring ? kThinnestLocalRingToFace : kThinnestSharedRing;
+}
 
 // A group of faces meshed with triangles and tets where a pipe would have had a hex ring.
 struct RingDrop {
@@ -49,10 +56,12 @@ std::vector<RingDrop> walls_without_ring(const TubeSearch& tubes, int face_count
 void drop_branches(TubeSearch& tubes, std::vector<RingDrop>& dropped);
 
 // The tube (index into tubes.tubes) whose ring the distances (Dc, Dcb) or a bend leave the least
-// room for, when that room is under `thinnest` of its radius, whatever St the user asked for;
+// room for, when that room is under `thinnest` of its radius (`thinnest_to_face` towards a face),
+// whatever St the user asked for;
 // -1 when every ring fits. `drop` says why. Of two pipes too close to each other, the one with
 // the smaller wall goes, unless only the other would leave room for the ring of the one kept.
-int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thinnest, RingDrop& drop);
+int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thinnest, double thinnest_to_face,
+                      RingDrop& drop);
 
 // A hole that is not a tube within kThinnestRing of its radius of a face it does not touch: the
 // tets in that gap are flat. One warning line each; `cause` gets the narrowest such gap in a few

@@ -392,6 +392,7 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
          "pipe_network writes the water into a .inp"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"reverse_flow", {"a"}}}; }),
          "\"reverse_flow\" takes whole pipe numbers"},
+        {with([](json& m) { m["blocks"][0]["options"] = {{"local_ring", 0}}; }), "\"local_ring\" must be true or false"},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
         {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},
         {with([](json& m) { m["name"] = {{"size", 1}}; }), "\"name\" must be a string"},

@@ -166,3 +166,16 @@ def test_economy_is_coarser_and_given_options_win():
     assert len(economy.hexes) % 8 == 0
     layered = tubemesh.mesh("paper-ex3", economy=True, layers=3, threads=1)
     assert len(layered.hexes) % 12 == 0 and len(layered.hexes) != len(economy.hexes)
+
+
+def test_local_ring_thins_the_ring_only_near_the_face(tmp_path):
+    spec = tmp_path / "pipe.json"
+    spec.write_text('{"box": [4, 3, 2], "check_clearance": false, "pipes": [{"path": "line", "diameter": 0.1, '
+                    '"points": [[0, 1.5, 0.15], [4, 1.5, 0.15]]}]}')
+    step = tmp_path / "pipe.step"
+    tubemesh.make_block(step, spec=spec)
+    local = tubemesh.mesh(step, threads=1, until="sweep")
+    paper = tubemesh.mesh(step, threads=1, until="sweep", local_ring=False)
+    assert local.report["sizes"]["St"] > paper.report["sizes"]["St"]
+    assert any("thinned locally" in line for line in local.report["model"])
+    assert not any("thinned locally" in line for line in paper.report["model"])

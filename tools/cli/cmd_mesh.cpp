@@ -194,10 +194,10 @@ Command add_mesh_command(CLI::App& app) {
                   "least 0.5: the tets' minimum and mean rise, the pyramids' fall (default: apexes stay where the "
                   "pyramid layer put them)");
     cmd->add_flag_callback(
-        "--local-ring", [args] { args->settings.local_ring = true; },
-        "Thin each hex ring only where a face or another pipe comes near it, per place and direction, and keep "
-        "St elsewhere (default: one St for every ring, cut by the paper's rules for the closest place of all); "
-        "experimental: two rings close to each other may leave their pyramids no room");
+        "--global-ring", [args] { args->settings.local_ring = false; },
+        "One ring thickness St for every tube, cut by the paper's rules for the closest place of all (default: St "
+        "stays and each ring thins, with shorter steps along it, only where a face or another pipe comes near it, "
+        "per place and direction; a tube with room everywhere gets the same ring either way)");
     cmd->add_flag_callback(
         "--fixed-surface", [args] { args->settings.slide_surface = false; },
         "Keep every surface node where the surface mesher put it (default: the tet optimisation slides the nodes "

@@ -39,7 +39,7 @@ void expect_meshed(const fs::path& step, const std::string& options, const std::
     EXPECT_EQ(run_command(cli() + " check " + q(out)).exit_code, 0);
 }
 
-void expect_refused(const fs::path& step, const std::string& options, const std::string& message,
+[[maybe_unused]] void expect_refused(const fs::path& step, const std::string& options, const std::string& message,
                     const fs::path& out) {
     const auto r = run_command(cli() + " mesh " + q(step) + " -o " + q(out) + " " + options);
     EXPECT_EQ(r.exit_code, 2) << r.out << r.err;

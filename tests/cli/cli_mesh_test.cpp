@@ -103,11 +103,11 @@ TEST(CliMesh, ReadmeSynopsisHasEveryFlagOfTheHelp) {
     ASSERT_EQ(help.exit_code, 0) << help.err;
     std::ifstream in(std::string(TUBEMESH_SOURCE_DIR) + "/README.md");
     ASSERT_TRUE(in) << "README.md";
-    // The synopsis: from "tubemesh mesh " to the next line that does not continue it.
+    // The synopsis: from "tubemesh mesh [CAD] " to the next line that does not continue it.
     std::string synopsis, line;
     bool inside = false;
     while (std::getline(in, line)) {
-        if (line.rfind("tubemesh mesh ", 0) == 0) inside = true;
+        if (line.rfind("tubemesh mesh [CAD] ", 0) == 0) inside = true;
         else if (inside && line.rfind("    ", 0) != 0) break;
         if (inside) synopsis += line + "\n";
     }

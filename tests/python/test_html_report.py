@@ -28,7 +28,7 @@ def opened(cli, tmp_path_factory):
     report = folder / "report.html"
     subprocess.run([cli, "mesh", "--quiet", "-o", str(folder / "dam.msh"), "--html", str(report), "--report",
                     str(folder / "dam.json")], check=True)
-    with Page(1400, 2400) as page:
+    with Page(1400, 3600) as page:
         page.open(report)
         rects = page.evaluate("""JSON.stringify({
             view: document.getElementById('view').getBoundingClientRect(),

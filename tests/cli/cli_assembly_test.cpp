@@ -23,20 +23,13 @@
 #include "geom/builders/block_builder.hpp"
 #include "geom/model/model_occt.hpp"
 #include "geom/import/step_write_occt.hpp"
-#include "tests/support/cli_command.hpp"
+#include "tests/support/cli_test_names.hpp"
 #include "tests/support/outside_readers.hpp"
-#include "tests/support/process.hpp"
 
 namespace tubemesh {
 namespace {
 
-using nlohmann::json;
-using testing::cli;
-using testing::q;
-using testing::run_command;
 using testing::run_script;
-using testing::TempDir;
-namespace fs = std::filesystem;
 
 json read_json(const fs::path& p) {
     std::ifstream in(p);

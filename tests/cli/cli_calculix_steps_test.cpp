@@ -16,23 +16,16 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tests/support/cli_command.hpp"
+#include "tests/support/cli_test_names.hpp"
 #include "tests/support/mesh_io_samples.hpp"
 #include "tests/support/outside_readers.hpp"
-#include "tests/support/process.hpp"
 #include "tests/support/readme_blocks.hpp"
 
 namespace tubemesh {
 namespace {
 
-using nlohmann::json;
-using testing::cli;
-using testing::q;
 using testing::read_text;
-using testing::run_command;
 using testing::run_script;
-using testing::TempDir;
-namespace fs = std::filesystem;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

@@ -3,7 +3,8 @@
 // (tests/scripts/calculix_run.py writes the decks and reads the results):
 //  * a patch test - T = x + 2y + 3z fixed on every boundary node, reproduced at every node
 //    (a misread coordinate, a mis-numbered element or a hanging node breaks it) - on the
-//    built-in dam block, paper-ex2 and a random block;
+//    built-in dam block, paper-ex2, a random block, and a T-junction and two crossing pipes
+//    (walls that meet: tets there, a ring on the pipe away from them);
 //  * the dam block's pipe at 10 and top at 25: every temperature in [10, 25], once with fixed
 //    temperatures on the node sets, once with a *FILM on the pipe's element-face sets;
 //  * the dam block under gravity, bottom fixed: the top moves as a column does;
@@ -19,33 +20,47 @@
 #include <string>
 
 #include "tests/support/mesh_io_samples.hpp"
-#include "tests/support/cli_command.hpp"
+#include "tests/support/cli_test_names.hpp"
 #include "tests/support/outside_readers.hpp"
-#include "tests/support/process.hpp"
 #include "tests/support/readme_blocks.hpp"
 
 namespace tubemesh {
 namespace {
 
-using nlohmann::json;
-using testing::cli;
-using testing::q;
-using testing::run_command;
 using testing::run_script;
-using testing::TempDir;
+
+// A block whose pipe walls meet, meshed with tets there instead of a ring (as in
+// tests/geom_ring_fallback_test.cpp): a 4 x 4 x 4 box with a pipe along y = 3.2 and either a
+// narrower blind branch ending in it (the T) or a pipe crossing it (the cross), and far from them
+// a pipe along x that keeps its ring.
+std::string meeting_pipes_spec(const std::string& case_name) {
+    const std::string branch = case_name == "T-junction"
+                                   ? R"({"path": "line", "diameter": 0.14, "points": [[2, 0, 3], [2, 3.2, 3]],)"
+                                     R"( "blind": true})"
+                                   : R"({"path": "line", "diameter": 0.2, "points": [[2, 0, 3], [2, 4, 3]]})";
+    return R"({"box": [4, 4, 4], "check_clearance": false, "pipes": [)"
+           R"({"path": "line", "diameter": 0.2, "points": [[0, 0.8, 0.8], [4, 0.8, 0.8]]}, )"
+           R"({"path": "line", "diameter": 0.2, "points": [[0, 3.2, 3], [4, 3.2, 3]]}, )" +
+           branch + "]}";
+}
 
 // Writes `case_name`'s mesh as .inp into `dir`: "dam" is the built-in block, "paper-ex2" the
-// preset through STEP at the paper's S 1.1, "seed N" a random block.
+// preset through STEP at the paper's S 1.1, "seed N" a random block, "T-junction" and "crossing
+// pipes" the blocks of meeting_pipes_spec.
 std::filesystem::path mesh_inp(const TempDir& dir, const std::string& case_name) {
     const auto inp = dir / "mesh.inp";
     std::string mesh = cli() + " mesh --quiet --threads 2 -o " + q(inp);
     if (case_name != "dam") {
         const auto step = dir / "block.step";
-        const std::string source = case_name.rfind("seed ", 0) == 0 ? "--seed " + case_name.substr(5)
-                                                                     : "--preset " + case_name;
+        std::string source = case_name.rfind("seed ", 0) == 0 ? "--seed " + case_name.substr(5)
+                                                              : "--preset " + case_name;
+        if (case_name == "T-junction" || case_name == "crossing pipes") {
+            testing::write_text(dir / "block.json", meeting_pipes_spec(case_name));
+            source = "--spec " + q(dir / "block.json");
+        }
         const auto made = run_command(cli() + " make-block " + source + " -o " + q(step));
         EXPECT_EQ(made.exit_code, 0) << made.err;
-        mesh += " " + q(step) + (case_name == "paper-ex2" ? " --size 1.1" : "");
+        mesh.append(" ").append(q(step)).append(case_name == "paper-ex2" ? " --size 1.1" : "");
     }
     const auto meshed = run_command(mesh);
     EXPECT_EQ(meshed.exit_code, 0) << meshed.out << meshed.err;
@@ -70,7 +85,8 @@ TEST_P(CalculixPatch, ReproducesALinearTemperatureAtEveryNode) {
     EXPECT_LT(r["relative_error"].get<double>(), 1e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, CalculixPatch, ::testing::Values("dam", "paper-ex2", "seed 7"),
+INSTANTIATE_TEST_SUITE_P(Meshes, CalculixPatch,
+                         ::testing::Values("dam", "paper-ex2", "seed 7", "T-junction", "crossing pipes"),
                          [](const auto& info) {
                              std::string name = info.param;
                              for (char& c : name)

@@ -13,17 +13,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tests/support/cli_command.hpp"
-#include "tests/support/process.hpp"
+#include "tests/support/cli_test_names.hpp"
 
 namespace tubemesh {
 namespace {
-
-using nlohmann::json;
-using testing::cli;
-using testing::q;
-using testing::run_command;
-using testing::TempDir;
 
 struct MeshRun {
     std::string out;

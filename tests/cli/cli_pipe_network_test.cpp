@@ -20,20 +20,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tests/support/cli_command.hpp"
+#include "tests/support/cli_test_names.hpp"
 #include "tests/support/outside_readers.hpp"
-#include "tests/support/process.hpp"
 
 namespace tubemesh {
 namespace {
 
-using nlohmann::json;
-using testing::cli;
-using testing::q;
-using testing::run_command;
 using testing::run_script;
-using testing::TempDir;
-namespace fs = std::filesystem;
 
 json network(std::vector<std::string> args) { return run_script("calculix_network.py", std::move(args)); }
 

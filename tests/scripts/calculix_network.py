@@ -38,47 +38,13 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 
 import numpy
 
+from ccx_files import dat_blocks, read_inp, run_ccx
+
 CP = 4186.0
-
-
-def read_inp(path):
-    """Nodes, elements (label -> (type, nodes)), node sets and element sets (upper case)."""
-    nodes, elements, nsets, elsets = {}, {}, {}, {}
-    keyword, params = None, {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith("**"):
-                continue
-            if line.startswith("*"):
-                head = [p.strip() for p in line.split(",")]
-                keyword = head[0].upper()
-                params = {p.split("=")[0].upper(): (p.split("=")[1].upper() if "=" in p else "") for p in head[1:]}
-                for key, sets in (("NSET", nsets), ("ELSET", elsets)):
-                    if key in params:
-                        sets.setdefault(params[key], [])
-                continue
-            fields = [v.strip() for v in line.split(",") if v.strip()]
-            if not fields:
-                continue
-            if keyword == "*NODE":
-                nodes[int(fields[0])] = tuple(float(v) for v in fields[1:4])
-                if "NSET" in params:
-                    nsets[params["NSET"]].append(int(fields[0]))
-            elif keyword == "*ELEMENT":
-                label = int(fields[0])
-                elements[label] = (params["TYPE"], [int(v) for v in fields[1:]])
-                if "ELSET" in params:
-                    elsets[params["ELSET"]].append(label)
-            elif keyword in ("*NSET", "*ELSET"):
-                target = nsets[params["NSET"]] if keyword == "*NSET" else elsets[params["ELSET"]]
-                values = [int(v) for v in fields]
-                target += list(range(values[0], values[1] + 1, values[2])) if "GENERATE" in params else values
-    return nodes, elements, nsets, elsets
 
 
 def films_of(mesh_path):
@@ -164,26 +130,14 @@ def structure(mesh_path, radius):
     return {"pipes": out}
 
 
-def run_ccx(directory, job):
-    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
-    done = subprocess.run(["ccx", "-i", job], cwd=directory, capture_output=True, text=True, env=env)
-    if done.returncode != 0 or "*ERROR" in done.stdout or "*ERROR" in done.stderr:
-        errors = [l for l in (done.stdout + done.stderr).splitlines() if l.strip()]
-        sys.exit(f"ccx failed on {job}.inp (exit {done.returncode}):\n" + "\n".join(errors[-30:]))
-    return read_dat(os.path.join(directory, job + ".dat"))
-
-
-def read_dat(path):
-    """Block title ("temperatures for set WATER", ...) -> node -> values (the last of each title)."""
-    blocks, current = {}, None
-    with open(path) as f:
-        for line in f:
-            parts = line.split()
-            m = re.match(r"\s*(.+?) for set (\S+) and time", line)
-            if m:
-                current = blocks[f"{m[1]} {m[2]}"] = {}
-            elif parts and parts[0].isdigit() and current is not None:
-                current[int(parts[0])] = [float(v) for v in parts[1:]]
+def titled_blocks(directory, job):
+    """Runs ccx on DIR/JOB.inp: block title ("temperatures WATER", ...) -> node -> values (the
+    last block of each title)."""
+    blocks = {}
+    for title, values in dat_blocks(run_ccx(directory, job)):
+        m = re.match(r"(.+?) for set (\S+) and time", title)
+        if m:
+            blocks[f"{m[1]} {m[2]}"] = values
     return blocks
 
 
@@ -204,7 +158,7 @@ def deck(directory, job, boundary, mass_flow, outputs):
             "*INCLUDE, INPUT=mesh.films.inp\n" + outputs + "*END STEP\n")
     with open(os.path.join(directory, job + ".inp"), "w") as f:
         f.write(text)
-    return run_ccx(directory, job)
+    return titled_blocks(directory, job)
 
 
 def fixed(mesh_path, directory, t_concrete, t_in, mass_flow, h, length, diameter):
@@ -306,20 +260,13 @@ def transient(deck_path, mesh_path, directory):
         source = mesh_path[:-4] + suffix
         shutil.copy(source, os.path.join(directory, os.path.basename(source)))
     shutil.copy(deck_path, os.path.join(directory, "deck.inp"))
-    run_ccx(directory, "deck")
-    times, outlets, current = [], {}, None
-    with open(os.path.join(directory, "deck.dat")) as f:
-        for line in f:
-            m = re.match(r"\s*temperatures for set (PIPE_\d+)_WATER_OUT and time\s+(\S+)", line)
-            if m:
-                current = outlets.setdefault(m[1].lower(), [])
-                if not times or float(m[2]) > times[-1]:
-                    times.append(float(m[2]))
-                continue
-            parts = line.split()
-            if current is not None and len(parts) == 2 and parts[0].isdigit():
-                current.append(float(parts[1]))
-                current = None
+    times, outlets = [], {}
+    for title, values in dat_blocks(run_ccx(directory, "deck")):
+        m = re.match(r"temperatures for set (PIPE_\d+)_WATER_OUT and time\s+(\S+)", title)
+        if m:
+            if not times or float(m[2]) > times[-1]:
+                times.append(float(m[2]))
+            outlets.setdefault(m[1].lower(), []).extend(v[0] for v in list(values.values())[:1])
     return {"times": times, "outlets": outlets}
 
 

@@ -28,56 +28,24 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
+
+from ccx_files import dat_blocks, read_inp, run_ccx
 
 
 def parse_inp(path):
     """Node label -> (x, y, z); node set name (upper case) -> labels; element set names."""
-    nodes, node_sets, element_sets = {}, {}, set()
-    keyword, name, generate = None, None, False
-    with open(path) as f:
-        for line in f:
-            if line.startswith("**"):
-                continue
-            if line.startswith("*"):
-                head = [p.strip() for p in line.split(",")]
-                keyword = head[0].upper()
-                params = {p.split("=")[0].upper(): p.split("=")[1] if "=" in p else "" for p in head[1:]}
-                generate = "GENERATE" in params
-                name = None
-                if keyword == "*NSET":
-                    name = params["NSET"].upper()
-                    node_sets.setdefault(name, [])
-                elif keyword == "*ELSET":
-                    element_sets.add(params["ELSET"].upper())
-                continue
-            fields = [v.strip() for v in line.split(",") if v.strip()]
-            if keyword == "*NODE":
-                nodes[int(fields[0])] = tuple(float(v) for v in fields[1:4])
-            elif keyword == "*NSET" and name:
-                values = [int(v) for v in fields]
-                node_sets[name] += list(range(values[0], values[1] + 1, values[2])) if generate else values
-    return nodes, node_sets, element_sets
+    nodes, _, node_sets, element_sets = read_inp(path)
+    return nodes, node_sets, set(element_sets)
 
 
-def run_ccx(directory, job):
-    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
-    done = subprocess.run(["ccx", "-i", job], cwd=directory, capture_output=True, text=True, env=env)
-    if done.returncode != 0 or "*ERROR" in done.stdout or "*ERROR" in done.stderr:
-        errors = [l for l in (done.stdout + done.stderr).splitlines() if l.strip()]
-        sys.exit(f"ccx failed on {job}.inp (exit {done.returncode}):\n" + "\n".join(errors[-30:]))
-    return read_dat(os.path.join(directory, job + ".dat"))
-
-
-def read_dat(path):
-    """Node -> values of the last *NODE PRINT block (one value for NT, three for U)."""
+def node_values(directory, job):
+    """Runs ccx on DIR/JOB.inp: node -> values of the last *NODE PRINT block (one value for NT,
+    three for U)."""
+    path = run_ccx(directory, job)
     values = {}
-    with open(path) as f:
-        for line in f:
-            parts = line.split()
-            if parts and parts[0].isdigit() and len(parts) >= 2:
-                values[int(parts[0])] = [float(v) for v in parts[1:]]
+    for _, block in dat_blocks(path):
+        values.update(block)
     if not values:
         sys.exit(f"no node values in {path}")
     return values
@@ -111,7 +79,7 @@ def patch(mesh_path, directory):
     lines = "".join(f"{n}, 11, 11, {exact[n]:.14g}\n" for n in boundary)
     place(mesh_path, directory, "mesh.inp")
     write(directory, "patch.inp", heat_deck("mesh.inp", "*BOUNDARY\n" + lines))
-    t = run_ccx(directory, "patch")
+    t = node_values(directory, "patch")
     missing = set(nodes) - set(t)
     if missing:
         sys.exit(f"{len(missing)} nodes have no temperature")
@@ -134,7 +102,7 @@ def thermal(mesh_path, directory, pipe, top, variant):
         loads += "*FILM\n" + "".join(f"{s}, F{s[-1]}, 10., 1.E8\n" for s in faces)
     place(mesh_path, directory, "mesh.inp")
     write(directory, "thermal.inp", heat_deck("mesh.inp", loads))
-    t = run_ccx(directory, "thermal")
+    t = node_values(directory, "thermal")
     pipe_t = [t[n][0] for n in node_sets[pipe]]
     return {"nodes": len(t), "t_min": min(v[0] for v in t.values()), "t_max": max(v[0] for v in t.values()),
             "pipe_t_min": min(pipe_t), "pipe_t_max": max(pipe_t), "film_lines": film_lines}
@@ -153,7 +121,7 @@ def gravity(mesh_path, directory, bottom):
           f"*STEP\n*STATIC\n*BOUNDARY\n{bottom.upper()}, 1, 3\n"
           f"*DLOAD\nEALL, GRAV, {g}, 0., 0., -1.\n"
           "*NODE PRINT, NSET=NALL\nU\n*END STEP\n")
-    u = run_ccx(directory, "gravity")
+    u = node_values(directory, "gravity")
     largest = max(math.sqrt(sum(c * c for c in v[:3])) for v in u.values())
     estimate = density * g * height ** 2 / (2 * young)
     return {"nodes": len(u), "height": height, "max_displacement": largest, "estimate": estimate,
@@ -163,7 +131,7 @@ def gravity(mesh_path, directory, bottom):
 def deck(deck_path, mesh_path, directory):
     place(mesh_path, directory, os.path.basename(mesh_path))
     place(deck_path, directory, "deck.inp")
-    t = run_ccx(directory, "deck")
+    t = node_values(directory, "deck")
     return {"nodes": len(t), "t_min": min(v[0] for v in t.values()), "t_max": max(v[0] for v in t.values())}
 
 

@@ -21,28 +21,18 @@ prints what it computed, as JSON (the mesh is read with calculix_run.parse_inp).
 The work goes to DIR, which must exist. Exit status 1 with the reason on stderr when ccx fails.
 """
 import json
-import os
-import subprocess
 import sys
 
 from calculix_run import parse_inp, place, write
+from ccx_files import dat_blocks, read_inp, run_ccx
 
 
-def run_ccx(directory, job):
-    """Node -> values per *NODE PRINT block of the .dat file: {"temperatures": {...}, "displacements": {...}}."""
-    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
-    done = subprocess.run(["ccx", "-i", job], cwd=directory, capture_output=True, text=True, env=env)
-    if done.returncode != 0 or "*ERROR" in done.stdout or "*ERROR" in done.stderr:
-        errors = [l for l in (done.stdout + done.stderr).splitlines() if l.strip()]
-        sys.exit(f"ccx failed on {job}.inp (exit {done.returncode}):\n" + "\n".join(errors[-30:]))
-    blocks, current = {}, None
-    with open(os.path.join(directory, job + ".dat")) as f:
-        for line in f:
-            parts = line.split()
-            if parts and not parts[0].isdigit():
-                current = blocks.setdefault(parts[0], {})  # the last block of each kind wins
-            elif parts and current is not None:
-                current[int(parts[0])] = [float(v) for v in parts[1:]]
+def blocks_by_kind(directory, job):
+    """Runs ccx on DIR/JOB.inp: node -> values per kind of *NODE PRINT block ("temperatures",
+    "displacements"), the last block of each kind winning."""
+    blocks = {}
+    for title, values in dat_blocks(run_ccx(directory, job)):
+        blocks.setdefault(title.split()[0], {}).update(values)
     return blocks
 
 
@@ -62,7 +52,7 @@ def coupled(mesh_path, directory, left, upstream, bottom):
           f"*BOUNDARY\n{left.upper()}, 1, 1\n{upstream.upper()}, 2, 2\n{bottom.upper()}, 3, 3\n"
           "*BOUNDARY\n" + "".join(f"{n}, 11, 11, 30.\n" for n in boundary) +
           "*NODE PRINT, NSET=NALL\nNT\n*NODE PRINT, NSET=NALL\nU\n*END STEP\n")
-    r = run_ccx(directory, "coupled")
+    r = blocks_by_kind(directory, "coupled")
     t, u = r.get("temperatures", {}), r.get("displacements", {})
     if set(t) != set(nodes) or set(u) != set(nodes):
         sys.exit(f"ccx printed {len(t)} temperatures and {len(u)} displacements for {len(nodes)} nodes")
@@ -76,35 +66,9 @@ def coupled(mesh_path, directory, left, upstream, bottom):
 
 
 def element_sets(path):
-    """Element set name (upper case) -> the node labels of its elements (sets of label lists
-    and GENERATE ranges, as tubemesh writes them)."""
-    elements, sets = {}, {}
-    keyword, name, generate = None, None, False
-    with open(path) as f:
-        for line in f:
-            if line.startswith("**"):
-                continue
-            if line.startswith("*"):
-                head = [p.strip() for p in line.split(",")]
-                keyword = head[0].upper()
-                params = {p.split("=")[0].upper(): p.split("=")[1] if "=" in p else "" for p in head[1:]}
-                generate = "GENERATE" in params
-                name = params.get("ELSET", "").upper() or None
-                if keyword == "*ELSET":
-                    sets.setdefault(name, [])
-                elif keyword == "*ELEMENT" and name:
-                    sets.setdefault(name, [])
-                continue
-            if keyword not in ("*ELEMENT", "*ELSET"):
-                continue
-            fields = [int(v) for v in line.split(",") if v.strip()]
-            if keyword == "*ELEMENT":
-                elements[fields[0]] = fields[1:]
-                if name:
-                    sets[name].append(fields[0])
-            elif keyword == "*ELSET" and name:
-                sets[name] += list(range(fields[0], fields[1] + 1, fields[2])) if generate else fields
-    return {n: {v for e in members for v in elements[e]} for n, members in sets.items()}
+    """Element set name (upper case) -> the node labels of its elements."""
+    _, elements, _, sets = read_inp(path)
+    return {n: {v for e in members for v in elements[e][1]} for n, members in sets.items()}
 
 
 def films(element_set_names, surface):
@@ -113,21 +77,10 @@ def films(element_set_names, surface):
 
 
 def temperature_blocks(directory, job):
-    """The printed temperature blocks of the .dat file, in order (one per step here)."""
-    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
-    done = subprocess.run(["ccx", "-i", job], cwd=directory, capture_output=True, text=True, env=env)
-    if done.returncode != 0 or "*ERROR" in done.stdout or "*ERROR" in done.stderr:
-        errors = [l for l in (done.stdout + done.stderr).splitlines() if l.strip()]
-        sys.exit(f"ccx failed on {job}.inp (exit {done.returncode}):\n" + "\n".join(errors[-30:]))
-    blocks = []
-    with open(os.path.join(directory, job + ".dat")) as f:
-        for line in f:
-            parts = line.split()
-            if parts and parts[0] == "temperatures":
-                blocks.append({})
-            elif parts and parts[0].isdigit() and blocks:
-                blocks[-1][int(parts[0])] = float(parts[1])
-    return blocks
+    """Runs ccx on DIR/JOB.inp: the printed temperature blocks of the .dat file, in order (one
+    per increment here)."""
+    return [{n: v[0] for n, v in values.items()} for title, values in dat_blocks(run_ccx(directory, job))
+            if title.split()[0] == "temperatures"]
 
 
 def lifts(mesh_path, directory, lower, upper):

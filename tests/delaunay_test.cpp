@@ -53,6 +53,20 @@ Points grid(int nx, int ny, int nz) {
     return p;
 }
 
+// Adds every point of p to tri under its index; returns the ids 0 .. n-1.
+std::vector<index_t> add_all(const Points& p, Triangulation& tri) {
+    std::vector<double> xyz;
+    std::vector<index_t> ids;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto a = p.at(i);
+        xyz.insert(xyz.end(), a.begin(), a.end());
+        ids.push_back(static_cast<index_t>(i));
+    }
+    tri.add_points(xyz, ids);
+    return ids;
+}
+
+
 // A kernel run with `threads` workers (0: all cores) and `partitions` parts (0: one per thread),
 // resolved as a mesh run resolves them.
 struct RunOptions {
@@ -360,14 +374,7 @@ TEST(Delaunay, ExactlyCosphericalIntegerPoints) {
 TEST(Triangulation, CosphericalTiesDecidedOncePerCavity) {
     const Points p = grid(8, 7, 6);
     Triangulation tri;
-    std::vector<double> xyz;
-    std::vector<index_t> ids;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const auto a = p.at(i);
-        xyz.insert(xyz.end(), a.begin(), a.end());
-        ids.push_back(static_cast<index_t>(i));
-    }
-    tri.add_points(xyz, ids);
+    std::vector<index_t> ids = add_all(p, tri);
     const std::vector<index_t> corners{0, 7, 8 * 6, static_cast<index_t>(p.size() - 1)};
     ASSERT_EQ(tri.start(corners).size(), 4u);
     std::erase_if(ids, [&](index_t v) { return std::find(corners.begin(), corners.end(), v) != corners.end(); });
@@ -456,14 +463,7 @@ TEST(Triangulation, InsertsIntoAnExistingTriangulationAndHandlesAHugeCavity) {
     p.add(0, 0, 0);
 
     Triangulation tri;
-    std::vector<double> xyz;
-    std::vector<index_t> ids;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const auto a = p.at(i);
-        xyz.insert(xyz.end(), a.begin(), a.end());
-        ids.push_back(static_cast<index_t>(i));
-    }
-    tri.add_points(xyz, ids);
+    const std::vector<index_t> ids = add_all(p, tri);
     std::vector<index_t> sphere(ids.begin(), ids.begin() + 2000);
     const std::vector<index_t> used = tri.start(sphere);
     ASSERT_EQ(used.size(), 4u);

@@ -1,4 +1,4 @@
-// TetSizeCaps (engine/pipeline/tet_size_caps.hpp) on hand-made meshes: one ring outer quad
+// TetSizeCaps (engine/sizing/tet_size_caps.hpp) on hand-made meshes: one ring outer quad
 // and surface triangles at known distances, measured against the volume size computed here
 // from its definition, h(x) = min(S, q + max(G - 1, g)|x - c|) for the quad's centroid c and
 // mean edge q.
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/pipeline/tet_size_caps.hpp"
+#include "engine/sizing/tet_size_caps.hpp"
 
 namespace {
 

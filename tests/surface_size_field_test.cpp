@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace {
 

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/pipeline/tet_size_caps.hpp"
+#include "engine/sizing/tet_size_caps.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/builders/presets.hpp"
 #include "geom/builders/random_block.hpp"
@@ -171,7 +171,7 @@ geom::BlockSpec straight_pipes(const std::string& name, const Vec3& box, std::in
 // the walls, but the surface field, which grades only from the end walls' ring holes, gave the
 // side walls triangles of about 1 there: the tets on them were caps (collapse 0.287). The
 // surface is now meshed again with caps where its triangles pass twice the tets' size
-// (engine/pipeline/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
+// (engine/sizing/tet_size_caps.hpp), and no triangle of the kept pass is left that large.
 geom::BlockSpec pipes_beside_walls() { return straight_pipes("two pipes beside the walls", {8, 40, 3}, {0.5, 39.5}, 1.5); }
 
 TEST(PipesBesideWalls, SurfaceTrianglesFitTheTetsBesideThem) {

@@ -20,7 +20,7 @@
 #include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "engine/quality/quality.hpp"
-#include "engine/tets/refinement/control_space.hpp"
+#include "engine/sizing/control_space.hpp"
 #include "engine/tets/refinement/interior_points.hpp"
 #include "engine/tets/refinement/refine.hpp"
 #include "tests/support/tet_domain_checks.hpp"

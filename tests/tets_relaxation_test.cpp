@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine/core/vec3_ops.hpp"
-#include "engine/tets/refinement/control_space.hpp"
+#include "engine/sizing/control_space.hpp"
 #include "engine/tets/refinement/odt_relaxation.hpp"
 #include "engine/tets/refinement/refine.hpp"
 #include "engine/tets/domain/star_kernels.hpp"

@@ -13,7 +13,7 @@
 #include "engine/check/mesh_check.hpp"
 #include "engine/core/parallelism.hpp"
 #include "engine/core/timing.hpp"
-#include "engine/pipeline/thin_rings.hpp"
+#include "engine/sizing/thin_rings.hpp"
 
 namespace tubemesh {
 

@@ -12,8 +12,8 @@
 #include "engine/pipeline/pipe_stations.hpp"
 #include "engine/pipeline/stage_check.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
-#include "engine/pipeline/thin_rings.hpp"
-#include "engine/pipeline/tet_size_caps.hpp"
+#include "engine/sizing/thin_rings.hpp"
+#include "engine/sizing/tet_size_caps.hpp"
 #include "engine/core/parallelism.hpp"
 #include "engine/surface/mesh_surfaces.hpp"
 

@@ -55,7 +55,7 @@
 #include "engine/pyramids/build_pyramids.hpp"
 #include "engine/quality/quality.hpp"
 #include "engine/surface/face_mesher.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 #include "engine/sweep/ring_joins.hpp"
 #include "engine/sweep/sweep.hpp"
 #include "engine/tets/tet_step.hpp"

@@ -3,7 +3,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "engine/pipeline/curvature_sizes.hpp"
+#include "engine/sizing/curvature_sizes.hpp"
 #include "engine/surface/face_boundaries.hpp"
 
 namespace tubemesh {

@@ -10,7 +10,7 @@
 
 #include "engine/geometry/tube_data.hpp"
 #include "engine/pipeline/pipeline.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace tubemesh {
 

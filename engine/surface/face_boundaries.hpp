@@ -11,7 +11,7 @@
 #include "engine/geometry/tube_data.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/surface/face_mesher.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace tubemesh::surface {
 

@@ -24,7 +24,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/geometry/surface_map.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace tubemesh::surface {
 

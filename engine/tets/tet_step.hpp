@@ -18,7 +18,7 @@
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/tets/recovery/boundary_recovery.hpp"
-#include "engine/tets/refinement/control_space.hpp"
+#include "engine/sizing/control_space.hpp"
 #include "engine/tets/refinement/odt_relaxation.hpp"
 #include "engine/tets/optimise/optimise.hpp"
 #include "engine/tets/refinement/refine.hpp"

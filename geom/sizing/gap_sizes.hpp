@@ -9,7 +9,7 @@
 // No OpenCASCADE header here.
 #include <vector>
 
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 #include "geom/model/model.hpp"
 #include "geom/sizing/sizing_distances.hpp"
 

@@ -16,7 +16,7 @@
 #include "engine/core/vec3_ops.hpp"
 #include "engine/pipeline/surface_sizing.hpp"
 #include "engine/quality/quality.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 #include "geom/builders/block_builder.hpp"
 #include "geom/model/face_properties.hpp"
 #include "tests/support/sweep_checks.hpp"

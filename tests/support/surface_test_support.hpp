@@ -9,7 +9,7 @@
 
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/surface/face_mesher.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 #include "tests/support/surface_test_surfaces.hpp"
 
 namespace tubemesh::testing {

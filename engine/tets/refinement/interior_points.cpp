@@ -14,7 +14,7 @@
 #include "engine/mesh/topology.hpp"
 #include "engine/core/vec3_ops.hpp"
 #include "engine/predicates/predicates_inline.hpp"
-#include "engine/tets/refinement/control_space.hpp"
+#include "engine/sizing/control_space.hpp"
 
 namespace tubemesh::tets {
 namespace pred = tubemesh::predicates;

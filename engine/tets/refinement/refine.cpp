@@ -6,7 +6,7 @@
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
-#include "engine/tets/refinement/control_space.hpp"
+#include "engine/sizing/control_space.hpp"
 #include "engine/tets/refinement/interior_points.hpp"
 
 namespace tubemesh::tets {

@@ -4,7 +4,7 @@
 // The surface size field (surface_sizing.hpp) grades only from the rings' end polygons, on the
 // faces the tubes pass through. A face a tube runs beside — the side wall of a lift 0.5-0.75 m
 // from its outer pipe, the top and bottom 1.5 m above the pipes — gets S there. The tet step
-// grades its interior points from the whole front (engine/tets/refinement/control_space.hpp: the nearest
+// grades its interior points from the whole front (engine/sizing/control_space.hpp: the nearest
 // front nodes' sizes, growing by G - 1 per unit distance), so between such a face and the
 // pipe it asks for sizes near the pipe's, h_q + (G - 1)·d, well under S: each of the face's
 // large triangles is then the base of caps. A 40-pipe lift at S 2.53 had wall triangles of
@@ -28,7 +28,7 @@
 
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace tubemesh {
 

@@ -1,4 +1,4 @@
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace tubemesh {
 

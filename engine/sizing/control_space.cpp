@@ -1,4 +1,4 @@
-#include "engine/tets/refinement/control_space.hpp"
+#include "engine/sizing/control_space.hpp"
 
 #include <algorithm>
 #include <cmath>

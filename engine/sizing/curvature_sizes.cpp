@@ -1,4 +1,4 @@
-#include "engine/pipeline/curvature_sizes.hpp"
+#include "engine/sizing/curvature_sizes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "engine/pipeline/tet_size_caps.hpp"
+#include "engine/sizing/tet_size_caps.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "engine/pipeline/thin_rings.hpp"
+#include "engine/sizing/thin_rings.hpp"
 
 #include <algorithm>
 

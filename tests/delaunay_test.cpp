@@ -351,6 +351,32 @@ TEST(Delaunay, LargeGridInParallelPasses) {
     EXPECT_GT(r.stats.passes, 0u);
 }
 
+// The insertion beats its pulse (every Triangulation::kPulseEvery points, in parallel parts and
+// serially), and a pulse that throws stops it with that exception: how a caller interrupts it.
+TEST(Delaunay, PulseBeatsDuringInsertionAndMayStopIt) {
+    const Points p = grid(30, 30, 30);
+    const Parallelism par = resolve_parallelism(2, 2);
+    const auto limit = limit_threads(par);
+    std::atomic<int> beats{0};
+    DelaunayOptions counting;
+    counting.min_points_per_part = 64;
+    counting.pulse = [&beats] { ++beats; };
+    const DelaunayResult r = delaunay::delaunay(p.x, p.y, p.z, par, counting);
+    check_delaunay(p, r);
+    EXPECT_GE(beats.load(), int(p.size() / delaunay::Triangulation::kPulseEvery) - 2);
+
+    struct Stop {};
+    for (unsigned parts : {1u, 2u}) {
+        DelaunayOptions stopping;
+        stopping.min_points_per_part = 64;
+        std::atomic<int> left{3};
+        stopping.pulse = [&left] {
+            if (--left == 0) throw Stop{};
+        };
+        EXPECT_THROW(delaunay::delaunay(p.x, p.y, p.z, Parallelism{2, parts}, stopping), Stop) << parts << " parts";
+    }
+}
+
 TEST(Delaunay, ExactlyCosphericalIntegerPoints) {
     // All integer points with x^2 + y^2 + z^2 = 325 (many representations), plus the centre.
     Points p;

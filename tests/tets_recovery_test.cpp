@@ -105,6 +105,26 @@ TEST(TetsRecovery, CubeSurface) {
                 (unsigned long long)st.edge_removals, st.steiner_inserted, st.steiner_removed);
 }
 
+// Recovery beats its pulse during its Delaunay and its element loops, and what the pulse throws
+// (the Python module's KeyboardInterrupt, as a C++ exception) leaves recovery: an interrupt is
+// answered during this phase, not after it.
+TEST(TetsRecovery, PulseBeatsAndMayStopRecovery) {
+    const Front f = cube_surface(12);
+    int beats = 0;
+    const TetDomain d = tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, nullptr, [&beats] { ++beats; });
+    expect_valid_domain(f, d);
+    EXPECT_GE(beats, 4);
+
+    struct Stop {};
+    for (int at = 1; at <= beats; ++at) {
+        int left = at;
+        const auto stop = [&left] {
+            if (--left == 0) throw Stop{};
+        };
+        EXPECT_THROW(tets::recover_boundary(f.xyz, f.tris, Parallelism{}, {}, nullptr, stop), Stop) << "at beat " << at;
+    }
+}
+
 TEST(TetsRecovery, BoxWithBoxShapedCavity) {
     Front f;
     const double lo[3] = {0, 0, 0}, hi[3] = {3, 3, 3};

@@ -373,12 +373,13 @@ index_t smallest(const std::array<index_t, N>& cycle) {
 // then sorted one by one: several times faster than sorting the whole array, and since
 // (key, code) is a total order the result does not depend on the order of the scatter.
 template <int N>
-std::vector<FaceRecord<N>> build_records(const HybridMesh& mesh, const FaceSlots& slots) {
+std::vector<FaceRecord<N>> build_records(const HybridMesh& mesh, const FaceSlots& slots, const Pulse& pulse) {
     const index_t points = mesh.point_count();
     std::vector<std::atomic<index_t>> cursor(points);
     for_each_cell_face<N>(mesh, slots, [&](const std::array<index_t, N>& cycle, index_t) {
         cursor[smallest<N>(cycle)].fetch_add(1, std::memory_order_relaxed);
     });
+    beat(pulse);
     std::vector<index_t> first(std::size_t{points} + 1, 0);  // bucket v: [first[v], first[v + 1])
     for (index_t v = 0; v < points; ++v) {
         first[v + 1] = first[v] + cursor[v].load(std::memory_order_relaxed);
@@ -388,6 +389,7 @@ std::vector<FaceRecord<N>> build_records(const HybridMesh& mesh, const FaceSlots
     for_each_cell_face<N>(mesh, slots, [&](const std::array<index_t, N>& cycle, index_t slot) {
         recs[cursor[smallest<N>(cycle)].fetch_add(1, std::memory_order_relaxed)] = make_record<N>(cycle, slot);
     });
+    beat(pulse);
     tbb::parallel_for(tbb::blocked_range<index_t>(0, points), [&](const auto& range) {
         for (index_t v = range.begin(); v != range.end(); ++v)
             std::sort(recs.begin() + first[v], recs.begin() + first[v + 1]);
@@ -637,18 +639,24 @@ const Violation* CheckReport::find(ViolationKind kind) const {
     return nullptr;
 }
 
-CheckReport check_mesh(const HybridMesh& mesh) {
+CheckReport check_mesh(const HybridMesh& mesh, const Pulse& pulse) {
     mesh.validate_layout();  // out-of-range node ids would make every step below undefined
     CheckReport report;
     ViolationSink sink;
     report.volume = check_cells(mesh, sink);
+    beat(pulse);
 
     const FaceSlots tri_slots(mesh, Shape::Tri), quad_slots(mesh, Shape::Quad);
-    const std::vector<TriRecord> tris = build_records<3>(mesh, tri_slots);
-    const std::vector<QuadRecord> quads = build_records<4>(mesh, quad_slots);
+    const std::vector<TriRecord> tris = build_records<3>(mesh, tri_slots, pulse);
+    beat(pulse);
+    const std::vector<QuadRecord> quads = build_records<4>(mesh, quad_slots, pulse);
+    beat(pulse);
     std::vector<FaceState> tri_state = match_faces(tris, tri_slots, sink);
+    beat(pulse);
     std::vector<FaceState> quad_state = match_faces(quads, quad_slots, sink);
+    beat(pulse);
     match_triangles_to_quads(tris, tri_state, quads, quad_state, tri_slots, quad_slots, sink);
+    beat(pulse);
 
     const Boundary boundary{indices_in_state(tri_state, FaceState::Free),
                             indices_in_state(quad_state, FaceState::Free)};

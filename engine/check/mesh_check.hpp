@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/pulse.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 
 namespace tubemesh {
@@ -68,8 +69,9 @@ struct CheckReport {
 // matching. Free faces found to be NonMatchingFace are interior in spirit and are not
 // boundary faces (so the same mismatch is not reported again as OpenBoundary).
 // Throws tubemesh::Error when the layout is broken (HybridMesh::validate_layout) or the mesh
-// has more than 2^31 triangular or 2^29 quadrilateral cell faces.
-CheckReport check_mesh(const HybridMesh& mesh);
+// has more than 2^31 triangular or 2^29 quadrilateral cell faces. `pulse` is called between
+// the steps (engine/core/pulse.hpp).
+CheckReport check_mesh(const HybridMesh& mesh, const Pulse& pulse = {});
 
 // One line per violation kind ("NonPositiveVolume: 3 (tet 12, tet 40, pyramid 2)"), lines
 // separated by '\n' without a trailing one; empty when the report is ok.

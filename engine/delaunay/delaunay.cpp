@@ -39,6 +39,7 @@ DelaunayResult delaunay(std::span<const double> x, std::span<const double> y, st
     {
         InsertionOrder order = brio_hilbert_order(x, y, z);
         Triangulation tri;
+        tri.set_pulse(options.pulse);
         tri.reserve_points(n + 8);
 
         // Kernel ids: box corners first, then the points in insertion order.

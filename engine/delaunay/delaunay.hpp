@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/parallelism.hpp"
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/delaunay/tet_store.hpp"
 
@@ -26,6 +27,8 @@ struct DelaunayOptions {
     // y = hi if k & 2, z = hi if k & 4); the hull is then the box.
     bool bounding_box = false;
     double box_margin = 0.1;
+    // The caller's sign of life during the insertion (engine/core/pulse.hpp); may throw.
+    Pulse pulse;
 };
 
 struct DelaunayStats {

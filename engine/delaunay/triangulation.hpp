@@ -42,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/delaunay/tet_store.hpp"
 
@@ -104,6 +105,11 @@ public:
     // ranges, so each part walks along one stretch of the curve; without, into slabs.
     void set_curve_keys(std::vector<std::uint64_t> keys);
     void reserve_tets(std::size_t n) { tets_.reserve(n); }
+    // Called every kPulseEvery insertions of a part or of the serial stragglers, from the
+    // thread inserting them; it may throw to stop the run (the other parts then stop at their
+    // next pulse).
+    void set_pulse(Pulse pulse) { pulse_ = std::move(pulse); }
+    static constexpr std::size_t kPulseEvery = 1024;
 
     // Constrained mode: takes over the points (kernel id = global id = position in `xyz`) and
     // the tets of a finished mesh (positive tets, no free slots, kNoAdjacent on the boundary).
@@ -188,6 +194,7 @@ private:
     std::vector<index_t> seed_;     // constrained mode: set_walk_start() per vertex, or kNoIndex
     std::vector<index_t> blocked_;  // constrained mode: skipped points
     KernelCounters counters_;
+    Pulse pulse_;
     std::size_t peak_bytes_ = 0;
     struct ScratchPool;
     std::unique_ptr<ScratchPool> scratch_;

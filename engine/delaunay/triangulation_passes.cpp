@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "engine/delaunay/triangulation_internal.hpp"
 #include "engine/core/vec3_ops.hpp"
@@ -99,10 +100,13 @@ void Triangulation::insert_serial(std::span<const index_t> points) {
     part.growable = true;
     part.hint = hint_;
     Scratch& s = scratch_->local.local();
-    if (constrained_)
-        for (index_t p : points) insert_one<false, true>(p, part, s);
-    else
-        for (index_t p : points) insert_one<false, false>(p, part, s);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (i % kPulseEvery == kPulseEvery - 1) beat(pulse_);
+        if (constrained_)
+            insert_one<false, true>(points[i], part, s);
+        else
+            insert_one<false, false>(points[i], part, s);
+    }
     free_.swap(part.free);
     blocked_.insert(blocked_.end(), part.blocked.begin(), part.blocked.end());
     tets_.set_size(part.next);
@@ -220,7 +224,12 @@ std::vector<index_t> Triangulation::insert_pass(std::span<const index_t> points,
             return;
         }
         Scratch& s = scratch_->local.local();
-        for (index_t i : pt.points) {
+        for (std::size_t k = 0; k < pt.points.size(); ++k) {
+            if (k % kPulseEvery == kPulseEvery - 1) {
+                if (tbb::is_current_task_group_canceling()) return;  // another part's pulse threw
+                beat(pulse_);
+            }
+            const index_t i = pt.points[k];
             const InsertStatus st = constrained_ ? insert_one<true, true>(points[i], pt, s)
                                                  : insert_one<true, false>(points[i], pt, s);
             if (st == InsertStatus::Conflict || st == InsertStatus::NoRoom) pt.failed.push_back(i);

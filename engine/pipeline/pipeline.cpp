@@ -231,7 +231,9 @@ void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineRe
     PyramidResult p;
     if (!out.sweep.outer_quads.empty()) {
         try {
-            p = build_pyramids(mesh, in, opt.pyramids);
+            PyramidOptions po = opt.pyramids;
+            po.pulse = [&progress] { progress.pulse(); };
+            p = build_pyramids(mesh, in, po);
         } catch (const PyramidRoomError& e) {
             throw RetryableFailure(e.what(), RetryableFailure::Cause::PyramidRoom, tubes_of_fronts(out.sweep, e.fronts),
                                    e.finding);
@@ -351,7 +353,11 @@ PipelineResult run_pipeline(const PipelineInput& input, const MeshOptions& optio
 
     PipelineResult out;
     const TooLargeLeft left = run_phases(input, options, par, until, out);
-    out.quality = summarize_quality(out.mesh);
+    {
+        PhaseProgress quality(options.progress, "quality", 1);
+        out.quality = summarize_quality(out.mesh, [&quality] { quality.pulse(); });
+        quality.finish();
+    }
     // Whether the triangles left too large made flat tets is known once the tets are made.
     const std::string warning =
         too_large_warning(left.triangles, left.passes,

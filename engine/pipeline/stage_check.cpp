@@ -45,7 +45,7 @@ std::size_t front_defects(const std::vector<index_t>& triangles) {
 void check_result(PipelineResult& result, const ProgressCallback& progress) {
     const auto t0 = Clock::now();
     PhaseProgress phase(progress, "check", 1);
-    result.check = check_mesh(result.mesh);
+    result.check = check_mesh(result.mesh, [&phase] { phase.pulse(); });
     std::string failures;
     for (const Violation& v : result.check.violations) {
         if (violation_expected(v.kind, result.reached)) continue;

@@ -74,6 +74,7 @@ std::vector<index_t> AdvancingFront::pass(const std::vector<index_t>& order, Pas
     batcher_.colour(order, world_.neighbours, batches_);
     const index_t count = static_cast<index_t>(batches_.offset.size() - 1);
     for (index_t b = 0; b < count; ++b) {
+        beat(opt_.pulse);
         const std::span<const index_t> batch = batches_.row(b);
         note_batch(static_cast<index_t>(batch.size()));
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 4),

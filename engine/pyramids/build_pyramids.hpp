@@ -36,6 +36,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 
@@ -117,6 +118,8 @@ struct PyramidOptions {
     // as its ideal. min_quality = 0 disables the check.
     double min_quality = 0.45;
     double min_quality_ratio = 0.8;
+    // Called between batches (engine/core/pulse.hpp); may throw to stop the run.
+    Pulse pulse;
 };
 
 // Why a candidate apex was refused (or that it was accepted). Counted in the statistics.

@@ -116,6 +116,8 @@ std::vector<double> measure_cells(const HybridMesh& mesh, Measure measure) {
 // mean is bit-identical for any number of threads.
 
 constexpr std::size_t kSummaryChunk = 16384;
+// Cells measured between two pulses (from whichever thread measures them).
+constexpr std::size_t kPulseCells = 1 << 16;
 constexpr int kClasses = 10;
 
 // Class k holds [lo + k·w, lo + (k+1)·w) with w = (hi - lo) / 10; the last class also holds
@@ -254,23 +256,30 @@ std::vector<double> cell_measure(const HybridMesh& mesh, CellKind kind, CellMeas
     return std::vector<double>(mesh.cell_count(kind), nan);
 }
 
-QualitySummary summarize_quality(const HybridMesh& mesh) {
+QualitySummary summarize_quality(const HybridMesh& mesh, const Pulse& pulse) {
     QualitySummary s;
     s.pyramid_jacobian = summarize(cell_quality(mesh, CellKind::Pyramid), 0.0, 1.0);
+    beat(pulse);
 
     // One pass per kind for all its measures.
     const std::size_t tets = mesh.block(CellKind::Tet).nodes.size() / 4;
     std::vector<double> collapse(tets), tet_jacobian(tets), dihedral(tets), aspect(tets);
     for_each_cell<CellKind::Tet>(mesh, [&](std::size_t i, const std::array<Vec3, 4>& p) {
+        if (i % kPulseCells == 0) beat(pulse);
         collapse[i] = tet_collapse(p);
         tet_jacobian[i] = tet_scaled_jacobian(p);
         dihedral[i] = tet_min_dihedral_degrees(p);
         aspect[i] = tet_aspect_ratio(p);
     });
+    beat(pulse);
     s.tet_collapse = summarize(collapse, 0.0, 1.0);
+    beat(pulse);
     s.tet_scaled_jacobian = summarize(tet_jacobian, 0.0, 1.0);
+    beat(pulse);
     s.tet_min_dihedral = summarize(dihedral, 0.0, 90.0);
+    beat(pulse);
     s.tet_aspect_ratio = summarize(aspect, 1.0, 4.0);
+    beat(pulse);
 
     const std::size_t hexes = mesh.block(CellKind::Hex).nodes.size() / 8;
     std::vector<double> jacobian(hexes), condition(hexes), verdict(hexes);
@@ -280,8 +289,11 @@ QualitySummary summarize_quality(const HybridMesh& mesh) {
         condition[i] = q.condition;
         verdict[i] = std::min(q.scaled_jacobian, hex_centre_scaled_jacobian(p));
     });
+    beat(pulse);
     s.hex_scaled_jacobian = summarize(jacobian, 0.0, 1.0);
+    beat(pulse);
     s.hex_condition = summarize(condition, 1.0, 4.0);
+    beat(pulse);
     s.hex_verdict_jacobian = summarize(verdict, 0.0, 1.0);
     return s;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/core/pulse.hpp"
 #include "engine/mesh/hybrid_mesh.hpp"
 #include "engine/core/vec3_ops.hpp"
 #include "engine/core/vec3_pair.hpp"
@@ -127,6 +128,7 @@ enum class CellMeasure {
 std::vector<double> cell_measure(const HybridMesh& mesh, CellKind kind, CellMeasure measure);
 
 // All four summaries. Parallel over cells; the result does not depend on the thread count.
-QualitySummary summarize_quality(const HybridMesh& mesh);
+// `pulse` is called between the measures (engine/core/pulse.hpp).
+QualitySummary summarize_quality(const HybridMesh& mesh, const Pulse& pulse = {});
 
 }  // namespace tubemesh

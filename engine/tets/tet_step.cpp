@@ -142,7 +142,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         local.push_back(to_domain[v]);
     }
 
-    TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery);
+    TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery, options.pulse);
     if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
     if (options.slide_surface) mark_sliding_points(mesh, front, to_domain, to_mesh, domain);
     // The relaxation inserts the interior points again into this mesh.
@@ -150,10 +150,12 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     if (options.relaxation.iterations > 0) recovered = recovered_tets(domain);
     if (options.part_done) options.part_done();
 
+    beat(options.pulse);
     ControlSpaceOptions co;
     co.far_size = options.far_size;
     co.gradation = options.gradation;
     const ControlSpace space(domain, co);
+    beat(options.pulse);
 
     std::vector<double> sizes;
     stats.refine =

@@ -259,7 +259,10 @@ private:
 }  // namespace
 
 TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front, const Parallelism& par,
-                           const RecoveryOptions& options, RecoveryStats* stats_out) {
+                           const RecoveryOptions& options, RecoveryStats* stats_out, const Pulse& pulse) {
+    // Elements checked or recovered between two pulses: a missing one costs flips and
+    // Steiner tries, a present one a ball lookup.
+    constexpr std::size_t kPulseEvery = 256;
     const auto t_start = Clock::now();
     RecoveryStats st;
     if (options.max_ring < 3 || options.max_ring > kMaxRecoveryRing)
@@ -290,6 +293,7 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
     delaunay::DelaunayOptions dopt;
     dopt.bounding_box = true;
     dopt.box_margin = options.box_margin;
+    dopt.pulse = pulse;
     delaunay::DelaunayResult del = delaunay::delaunay(x, y, z, par, dopt);
     if (!del.duplicates.empty())
         throw Error("tet front: points " + std::to_string(ids[del.duplicates[0].first]) + " and " +
@@ -313,8 +317,10 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
     std::vector<Target> targets;
     targets.reserve(edges.size());
     for (const auto& [u, v] : edges) targets.push_back({u, v, kNoIndex});
+    beat(pulse);
     std::vector<std::uint8_t> there = present_now(mesh, targets);
     for (std::size_t i = 0; i < targets.size(); ++i) {
+        if (i % kPulseEvery == kPulseEvery - 1) beat(pulse);
         if (there[i] || rec.present(targets[i])) continue;
         ++st.missing_edges;
         st.edges_by_flips += rec.recover(targets[i]);
@@ -324,8 +330,10 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
     locks.lock_faces = true;
     targets.clear();
     for (std::size_t i = 0; i < front.size(); i += 3) targets.push_back({front[i], front[i + 1], front[i + 2]});
+    beat(pulse);
     there = present_now(mesh, targets);
     for (std::size_t i = 0; i < targets.size(); ++i) {
+        if (i % kPulseEvery == kPulseEvery - 1) beat(pulse);
         if (there[i] || rec.present(targets[i])) continue;
         ++st.missing_faces;
         st.faces_by_flips += rec.recover(targets[i]);
@@ -333,12 +341,17 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
     st.seconds_faces = seconds_since(t0);
     st.steiner_inserted = static_cast<index_t>(rec.steiner.size());
     t0 = Clock::now();
+    beat(pulse);
     if (options.remove_steiner)
-        for (index_t s : rec.steiner)
+        for (std::size_t i = 0; i < rec.steiner.size(); ++i) {
+            if (i % kPulseEvery == kPulseEvery - 1) beat(pulse);
+            const index_t s = rec.steiner[i];
             if (mesh.incident_tet(s) != kNoIndex && contract_point(mesh, s)) ++st.steiner_removed;
+        }
     st.seconds_steiner_removal = seconds_since(t0);
 
     // 3. Inside / outside by flood fill, seeded on both sides of every front triangle.
+    beat(pulse);
     t0 = Clock::now();
     const index_t slots = mesh.slot_count();
     constexpr std::uint8_t kInside = 1, kOutside = 2;
@@ -379,6 +392,7 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
             if (nb != kNoIndex) set_label(nb >> 2, label[t]);
         }
     }
+    beat(pulse);
     std::vector<std::uint8_t> keep(slots, 0);
     for (index_t t = 0; t < slots; ++t) {
         if (!mesh.alive(t) || label[t] != kInside) continue;

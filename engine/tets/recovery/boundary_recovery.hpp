@@ -19,6 +19,7 @@
 #include <span>
 
 #include "engine/core/parallelism.hpp"
+#include "engine/core/pulse.hpp"
 #include "engine/core/types.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
@@ -80,7 +81,10 @@ public:
 // The Delaunay kernel runs with par.parts parts (the result depends on the input and that count
 // only); it and recovery's parallel loops (front checks, which front elements are present, the
 // tets beside the front) run in the caller's oneTBB arena; the flips and Steiner points are serial.
+// `pulse` is called during the Delaunay insertion and between batches of recovered elements
+// (engine/core/pulse.hpp); what it throws leaves recovery.
 TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t> front, const Parallelism& par,
-                           const RecoveryOptions& options = {}, RecoveryStats* stats = nullptr);
+                           const RecoveryOptions& options = {}, RecoveryStats* stats = nullptr,
+                           const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

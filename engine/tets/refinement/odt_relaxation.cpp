@@ -79,7 +79,7 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 // are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
 // so the way between them is short and inside the region. Points that fail that too (none on
 // the reference cases) are left without tets. Returns how many needed the second walk.
-index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts) {
+index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts, const Pulse& pulse) {
     const index_t fixed = recovered.points, n = dom.point_count();
     std::vector<index_t> used;
     used.reserve(n - fixed);
@@ -100,6 +100,7 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts)
     // The kernel holds every point (kernel id = domain id; the free ones not in a tet yet, the
     // unused ones never inserted) and the recovered tets while it inserts.
     delaunay::Triangulation tri;
+    tri.set_pulse(pulse);
     tri.adopt(std::move(dom.xyz), recovered.tets.clone());
     dom.xyz.clear();
     for (index_t& k : order) k = used[k];
@@ -157,7 +158,7 @@ RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, 
         beat(pulse);
         stats.moves += move_points(domain, fixed, sizes);
         beat(pulse);
-        stats.second_walks += reinsert(domain, recovered, par.parts);
+        stats.second_walks += reinsert(domain, recovered, par.parts, pulse);
     }
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither
     // moves nor is inserted again); remove them all.

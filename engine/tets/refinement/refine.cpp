@@ -21,6 +21,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
 
     {
         delaunay::Triangulation tri;
+        tri.set_pulse(pulse);
         // The kernel holds the domain's points and tets while it refines (kernel id = domain id).
         tri.adopt(std::move(domain.xyz), std::move(domain.tets));
         domain.xyz.clear();
@@ -40,11 +41,14 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             beat(pulse);
             const MeshView view{tri.store(), tri.points(), sizes, sources};
             const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
+            beat(pulse);
             stats.too_big_left = static_cast<index_t>(faces.size());
             if (faces.empty()) break;
             std::vector<Candidate> cand = propose_points(view, faces, space, proposals, lattice);
+            beat(pulse);
             stats.candidates += cand.size();
             const std::vector<index_t> keep = select_points(cand, live, options.reject_factor);
+            beat(pulse);
             stats.rejected_close += cand.size() - keep.size();
             if (keep.empty()) break;
             std::vector<double> kept_xyz(3 * keep.size());

@@ -408,11 +408,12 @@ enum class FaceState : std::uint8_t {
 };
 
 // Runs fn(first, last) for every run of records with equal keys, in parallel; a run that starts
-// in a chunk is handled by that chunk even when it ends beyond it.
+// in a chunk is handled by that chunk even when it ends beyond it. Beats `pulse` once a chunk.
 template <class Rec, class Fn>
-void for_each_run(const std::vector<Rec>& recs, Fn fn) {
+void for_each_run(const std::vector<Rec>& recs, const Pulse& pulse, Fn fn) {
     const std::size_t n = recs.size();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const auto& range) {
+        beat(pulse);
         std::size_t i = range.begin();
         while (i < range.end() && i > 0 && same_key(recs[i - 1], recs[i])) ++i;
         while (i < range.end()) {
@@ -426,13 +427,13 @@ void for_each_run(const std::vector<Rec>& recs, Fn fn) {
 
 template <int N>
 std::vector<FaceState> match_faces(const std::vector<FaceRecord<N>>& recs, const FaceSlots& slots,
-                                   ViolationSink& sink) {
+                                   ViolationSink& sink, const Pulse& pulse) {
     std::vector<FaceState> state(recs.size(), FaceState::Free);
     auto report = [&](ViolationKind kind, std::size_t i) {
         const ElementRef cell = slots.cell_of(slot_of(recs[i]));
         sink.add(kind, cell.set, cell.index);
     };
-    for_each_run(recs, [&](std::size_t first, std::size_t last) {
+    for_each_run(recs, pulse, [&](std::size_t first, std::size_t last) {
         if (last - first == 1) return;
         if (last - first > 2) {
             for (std::size_t i = first; i < last; ++i) {
@@ -578,7 +579,7 @@ void check_watertight(const Boundary& b, const std::vector<TriRecord>& tris, con
         for (int k = 0; k < 4; ++k) edges[3 * nt + 4 * i + k] = edge(c[k], c[(k + 1) % 4], f);
     });
     tbb::parallel_sort(edges.begin(), edges.end());
-    for_each_run(edges, [&](std::size_t first, std::size_t last) {
+    for_each_run(edges, Pulse{}, [&](std::size_t first, std::size_t last) {
         if (last - first == 2) return;
         for (std::size_t i = first; i < last; ++i) {
             const std::uint32_t f = edges[i].face;
@@ -651,9 +652,9 @@ CheckReport check_mesh(const HybridMesh& mesh, const Pulse& pulse) {
     beat(pulse);
     const std::vector<QuadRecord> quads = build_records<4>(mesh, quad_slots, pulse);
     beat(pulse);
-    std::vector<FaceState> tri_state = match_faces(tris, tri_slots, sink);
+    std::vector<FaceState> tri_state = match_faces(tris, tri_slots, sink, pulse);
     beat(pulse);
-    std::vector<FaceState> quad_state = match_faces(quads, quad_slots, sink);
+    std::vector<FaceState> quad_state = match_faces(quads, quad_slots, sink, pulse);
     beat(pulse);
     match_triangles_to_quads(tris, tri_state, quads, quad_state, tri_slots, quad_slots, sink);
     beat(pulse);
@@ -665,9 +666,12 @@ CheckReport check_mesh(const HybridMesh& mesh, const Pulse& pulse) {
     report.interior_faces = static_cast<index_t>(interior / 2);
     report.boundary_faces = static_cast<index_t>(boundary.tris.size() + boundary.quads.size());
     report.boundary_area = boundary_area(mesh, boundary, tris, quads);
+    beat(pulse);
     check_watertight(boundary, tris, quads, tri_slots, quad_slots, sink);
+    beat(pulse);
 
     check_stored_faces<3>(mesh, tris, tri_state, sink);
+    beat(pulse);
     check_stored_faces<4>(mesh, quads, quad_state, sink);
     report.violations = sink.collect();
     return report;

@@ -199,10 +199,9 @@ Command add_mesh_command(CLI::App& app) {
         "stays and each ring thins, with shorter steps along it, only where a face or another pipe comes near it, "
         "per place and direction; a tube with room everywhere gets the same ring either way)");
     cmd->add_flag("--scale-free", args->settings.scale_free,
-                  "Round the geometry handed to the mesher to 2^-26 of the solid's diagonal: the same solid at any "
-                  "scale (1e-6, 1, 1e6), or rounded differently by its CAD export, gives the same mesh up to the scale "
-                  "(default: off; the mesh differs from the default's by tie-breaks, the tet minimum by about 0.01 "
-                  "either way)");
+                  "Round the geometry handed to the mesher to 2^-26 of the solid's diagonal, so that one solid at "
+                  "another scale (1e-6, 1, 1e6) or rounded otherwise by its CAD export gives the same mesh up to the "
+                  "scale (default: off; the rounding changes every mesh's tie-breaks, the tet minimum by up to 0.006)");
     cmd->add_flag_callback(
         "--fixed-surface", [args] { args->settings.slide_surface = false; },
         "Keep every surface node where the surface mesher put it (default: the tet optimisation slides the nodes "

@@ -201,8 +201,8 @@ Command add_mesh_command(CLI::App& app) {
     cmd->add_flag("--scale-free", args->settings.scale_free,
                   "Round the geometry handed to the mesher to 2^-26 of the solid's diagonal, so that one solid at "
                   "another scale (1e-6, 1, 1e6) or rounded otherwise by its CAD export gives the same mesh up to the "
-                  "scale (so far for straight and circular pipes: a curved pipe's fitted axis moves by more than the "
-                  "grid) (default: off; the rounding changes every mesh's tie-breaks, the tet minimum by up to 0.006)");
+                  "scale (so far for some solids: where the tube geom derives from a pipe's wall moves by more than the "
+                  "grid, not) (default: off; the rounding changes every mesh's tie-breaks, the tet minimum by up to 0.006)");
     cmd->add_flag_callback(
         "--fixed-surface", [args] { args->settings.slide_surface = false; },
         "Keep every surface node where the surface mesher put it (default: the tet optimisation slides the nodes "

@@ -47,6 +47,22 @@ TEST(WorkingScale, LengthsGoThereAndBackWithExactPowers) {
     EXPECT_EQ(to_working(0.3, 0), 0.3);
 }
 
+TEST(EngineGrid, RoundsToPowerOfTwoStepsOnceAndAlikeOnEitherSideOfAPowerOfTwo) {
+    const EngineGrid grid(29.4, 26);  // the dam block: steps of 16 · 2^-26
+    const double step = std::ldexp(1.0, 4 - 26);
+    const double x = 12.345678901234567;
+    EXPECT_EQ(grid.length(x), std::nearbyint(x / step) * step);
+    EXPECT_EQ(grid.length(grid.length(x)), grid.length(x));
+    EXPECT_EQ(grid.length(x + step / 1000), grid.length(x));
+    EXPECT_FALSE(std::signbit(grid.length(-1e-12)));  // no -0
+    // A face 4 long and the same face one rounding shorter: the same step for its parameters.
+    EXPECT_EQ(grid.parameter(1.2345678901, 4.0), grid.parameter(1.2345678901, std::nextafter(4.0, 0.0)));
+    const Vec3 d = grid.vector({std::nextafter(1.0, 0.0), 1e-17, -1e-17});
+    EXPECT_EQ(d.x, 1.0);
+    EXPECT_EQ(d.y, 0.0);
+    EXPECT_EQ(d.z, 0.0);
+}
+
 fs::path scratch(const std::string& name) {
     const fs::path dir = fs::path(::testing::TempDir()) / "tubemesh_working_scale";
     fs::create_directories(dir);

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "engine/core/timing.hpp"
+#include "geom/engine_grid.hpp"
 #include "geom/sizing/discretize.hpp"
 #include "geom/sizing/gap_sizes.hpp"
 #include "geom/model/face_properties.hpp"
@@ -187,6 +188,7 @@ PrepareOptions prepare_options(const MeshOptions& options) {
     p.budget.memory = options.memory;
     p.budget.sweep = options.sweep;
     p.size_growth = options.size_growth;
+    p.grid_bits = options.grid_bits;
     p.progress = options.progress;
     return p;
 }
@@ -269,6 +271,14 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         p.geometry = discretize(model, p.tubes.tubes, p.plan, options.discretize);
         p.maps = make_surface_maps(model);
         p.gap_sizes = gap_size_sources(model, holes, p.plan.size, options.size_growth);
+        if (options.grid_bits > 0) {
+            const BoundingBox box = model.bounds();
+            const EngineGrid grid(std::hypot(box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z),
+                                  options.grid_bits);
+            snap(p.geometry, grid);
+            snap(p.gap_sizes, grid);
+            for (auto& map : p.maps) map = on_grid(std::move(map), grid);
+        }
         progress.finish();
     }
     std::size_t edge_points = 0, stations = 0;

@@ -42,6 +42,7 @@ struct PrepareOptions {
     std::vector<RingDrop> drop;
     ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
     double size_growth = MeshOptions{}.size_growth;  // the surface size field's, for the gap sizes
+    int grid_bits = 0;  // > 0: the engine's input on a grid (MeshOptions::grid_bits, engine_grid.hpp)
 };
 
 // The user-facing part of MeshOptions (S, St, n, progress) as PrepareOptions.

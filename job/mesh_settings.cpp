@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "geom/engine_grid.hpp"
+
 namespace tubemesh::run {
 
 namespace {
@@ -57,6 +59,7 @@ MeshOptions mesh_options(const MeshSettings& s, Naming naming) {
     o.sweep_size = s.sweep_size.value_or(0);
     o.sweep_share = s.sweep_share;
     o.local_ring = s.local_ring;
+    o.grid_bits = s.scale_free ? geom::kScaleFreeGridBits : 0;
     o.circumferential = s.circumferential.value_or(0);
     o.chordal = s.chordal;
     o.chordal_given = s.chordal_given;

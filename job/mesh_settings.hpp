@@ -34,6 +34,7 @@ struct MeshSettings {
     Stage until = kLastStage;
     double sweep_share = 0;                 // > 0: automatic St = this share of S (apply_economy)
     bool local_ring = default_mesh_options().local_ring;
+    bool scale_free = false;  // the engine's input on geom's grid (MeshOptions::grid_bits)
 };
 
 // The economy preset (`--economy`): the paper's own ring, 4 nodes around a pipe in 2 layers, St

@@ -17,6 +17,7 @@
 #include "geom/assembly/assembly_occt.hpp"
 #include "geom/assembly/mesh_assembly.hpp"
 #include "geom/builders/block_builder.hpp"
+#include "geom/engine_grid.hpp"
 #include "geom/model/model_occt.hpp"
 #include "geom/import/step_write_occt.hpp"
 #include "tests/support/error_of.hpp"
@@ -92,6 +93,16 @@ TEST(GeomAssembly, TwoBoxesTouchingAreGluedIntoOneSharedFace) {
     const int shared = a.shared_faces()[0].face;
     EXPECT_NE(std::find(a.solids()[0].face_ids.begin(), a.solids()[0].face_ids.end(), shared), a.solids()[0].face_ids.end());
     EXPECT_NE(std::find(a.solids()[1].face_ids.begin(), a.solids()[1].face_ids.end(), shared), a.solids()[1].face_ids.end());
+}
+
+// Each solid would be rounded on its own grid, and the faces it shares with it: refused, before
+// any meshing.
+TEST(GeomAssembly, ScaleFreeGridIsRefused) {
+    const Assembly a = glue({box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})});
+    MeshOptions o = small_run();
+    o.grid_bits = kScaleFreeGridBits;
+    const std::string msg = error_of([&] { (void)mesh_assembly(a, o); });
+    EXPECT_NE(msg.find("--scale-free does not apply to an assembly"), std::string::npos) << msg;
 }
 
 TEST(GeomAssembly, TwoBoxesMeshIntoOneConformingMesh) {

@@ -93,6 +93,11 @@ struct MeshOptions {
     // tube with room everywhere gets the paper's ring. false: the paper's one St for every ring,
     // cut by the rules for the closest place of all.
     bool local_ring = true;
+    // > 0: geom rounds every length, position, direction and parameter it hands the engine to
+    // 2^-grid_bits of the solid's diagonal (geom/engine_grid.hpp, kScaleFreeGridBits), so solids
+    // that differ only by rounding (one shape drawn at 1e-6, 1 and 1e6) mesh alike. 0 (default):
+    // off; the grid changes every mesh by tie-breaks.
+    int grid_bits = 0;
     // n, nodes around every tube. 0 (default): the multiple of 4 nearest to the ring's
     // mid-circumference over St, at least 8 (circumferential_count in engine/sweep/sweep.hpp,
     // which says why; the paper's 4 only when given).

@@ -207,6 +207,9 @@ void share_joint_rings(std::vector<TubeData>& tubes, const std::vector<RingJoin>
 }  // namespace
 
 AssemblyRun mesh_assembly(const Assembly& a, const MeshOptions& options) {
+    // Each solid would be rounded on its own diagonal's grid, and the faces they share with it.
+    if (options.grid_bits > 0)
+        throw Error("--scale-free does not apply to an assembly yet: mesh it without --scale-free");
     const auto limit = limit_threads(run_parallelism(options));
     const std::vector<AssemblySolid>& solids = a.solids();
     std::vector<PreparedModel> prepared = prepare_solids(a, options);

@@ -1,6 +1,6 @@
 // `tubemesh mesh [IN] [-o OUT ...] [--economy] [--size S] [--sweep-size St] [--circ N] [--layers L] [--chordal C]
 // [--axial-aspect A] [--pyramid-height F] [--gradation G] [--threads T] [--tet-parts P]
-// [--tet-relax R] [--move-apexes] [--fixed-surface] [--max-elements N] [--report FILE.json] [--html FILE.html]
+// [--tet-relax R] [--move-apexes] [--scale-free] [--fixed-surface] [--max-elements N] [--report FILE.json] [--html FILE.html]
 // [--quiet] [--solid K | --assembly [--glue-tolerance D]] [--until STAGE] [--msh-ascii]
 // [--inp-family stress|heat|coupled|coupled-abaqus] [--inp-pyramid hex|c3d5]
 // [--pipe-network [--film-coefficient H] [--reverse-flow K ...]]`: mesh a
@@ -198,6 +198,11 @@ Command add_mesh_command(CLI::App& app) {
         "One ring thickness St for every tube, cut by the paper's rules for the closest place of all (default: St "
         "stays and each ring thins, with shorter steps along it, only where a face or another pipe comes near it, "
         "per place and direction; a tube with room everywhere gets the same ring either way)");
+    cmd->add_flag("--scale-free", args->settings.scale_free,
+                  "Round the geometry handed to the mesher to 2^-26 of the solid's diagonal, so that one solid at "
+                  "another scale (1e-6, 1, 1e6) or rounded otherwise by its CAD export gives the same mesh up to the "
+                  "scale (so far for some solids: where the tube geom derives from a pipe's wall moves by more than the "
+                  "grid, not) (default: off; the rounding changes every mesh's tie-breaks, the tet minimum by up to 0.006)");
     cmd->add_flag_callback(
         "--fixed-surface", [args] { args->settings.slide_surface = false; },
         "Keep every surface node where the surface mesher put it (default: the tet optimisation slides the nodes "

@@ -33,7 +33,7 @@ void check_formats(const nlohmann::json& v, const std::string& where) {
                         f.dump());
 }
 
-// Types here; ranges by run::mesh_options once the block's options are complete.
+// Types here; ranges by job::mesh_options once the block's options are complete.
 void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
     if (key == "formats") return check_formats(v, where);
     if (key == "reverse_flow") {
@@ -71,8 +71,8 @@ std::optional<T> optional_of(const nlohmann::json& o, const char* key) {
     return o.at(key).get<T>();
 }
 
-run::MeshSettings settings_of(const nlohmann::json& o) {
-    run::MeshSettings s;
+job::MeshSettings settings_of(const nlohmann::json& o) {
+    job::MeshSettings s;
     s.size = optional_of<double>(o, "size");
     s.sweep_size = optional_of<double>(o, "sweep_size");
     s.circumferential = optional_of<int>(o, "circ");
@@ -94,7 +94,7 @@ run::MeshSettings settings_of(const nlohmann::json& o) {
 }  // namespace
 
 nlohmann::json default_block_options() {
-    const run::MeshSettings d;
+    const job::MeshSettings d;
     return {{"size", nullptr},
             {"sweep_size", nullptr},
             {"circ", nullptr},
@@ -127,7 +127,7 @@ nlohmann::json merge_block_options(const nlohmann::json& base, const nlohmann::j
         out[key] = value;
     }
     try {
-        run::mesh_options(settings_of(out), run::Naming::Keywords);
+        job::mesh_options(settings_of(out), job::Naming::Keywords);
         pipe_network_of(out);
     } catch (const Error& e) {
         throw Error(where + ": " + e.what());
@@ -146,9 +146,9 @@ std::string options_hash(const nlohmann::json& options) {
 }
 
 MeshOptions mesh_options(const nlohmann::json& o, int threads) {
-    run::MeshSettings s = settings_of(o);
+    job::MeshSettings s = settings_of(o);
     s.threads = threads;
-    return run::mesh_options(s, run::Naming::Keywords);
+    return job::mesh_options(s, job::Naming::Keywords);
 }
 
 PipeNetworkOptions pipe_network_of(const nlohmann::json& o) {
@@ -156,9 +156,9 @@ PipeNetworkOptions pipe_network_of(const nlohmann::json& o) {
     for (const nlohmann::json& f : o.at("formats"))
         if (f == "inp") outputs.push_back("block.inp");
     const double h = o.at("film_coefficient").get<double>();
-    return run::pipe_network_options(o.at("pipe_network").get<bool>(),
+    return job::pipe_network_options(o.at("pipe_network").get<bool>(),
                                      h == PipeNetworkOptions{}.film_coefficient ? std::nullopt : std::optional(h),
-                                     o.at("reverse_flow").get<std::vector<int>>(), outputs, run::Naming::Keywords);
+                                     o.at("reverse_flow").get<std::vector<int>>(), outputs, job::Naming::Keywords);
 }
 
 int solid_of(const nlohmann::json& o) { return o.at("solid").is_null() ? 0 : o.at("solid").get<int>(); }

@@ -8,7 +8,7 @@
 //   pipe_network (true or false), film_coefficient, reverse_flow [pipe numbers] (the .inp's water
 //   networks, as `tubemesh mesh --pipe-network`)
 //
-// The meshing options are run::MeshSettings (job/mesh_settings.hpp) under the Python
+// The meshing options are job::MeshSettings (job/mesh_settings.hpp) under the Python
 // module's keywords: the same meaning, defaults and ranges as `tubemesh mesh`'s flags.
 // Everything but time_limit goes into the options hash: a block whose options change is meshed
 // again.

@@ -82,10 +82,10 @@ nlohmann::json mesh(const nlohmann::json& r) {
     const nlohmann::json& o = r.at("options");
     const std::vector<std::string> outputs = r.at("outputs").get<std::vector<std::string>>();
     std::vector<std::string> mesh_outputs, html_outputs;  // the HTML report is written as text
-    for (const std::string& out : outputs) (run::lower_extension(out) == ".html" ? html_outputs : mesh_outputs).push_back(out);
+    for (const std::string& out : outputs) (job::lower_extension(out) == ".html" ? html_outputs : mesh_outputs).push_back(out);
     const std::string report_path = r.at("report").get<std::string>();
-    for (const std::string& out : mesh_outputs) run::check_mesh_output(out, kLastStage);
-    run::check_report_output(report_path, ".json", "the report");
+    for (const std::string& out : mesh_outputs) job::check_mesh_output(out, kLastStage);
+    job::check_report_output(report_path, ".json", "the report");
     for (const std::string& out : outputs) remove_stale_temporaries(out);
     remove_stale_temporaries(report_path);
 
@@ -94,12 +94,12 @@ nlohmann::json mesh(const nlohmann::json& r) {
                                   ? geom::mesh_file(r.at("cad").get<std::string>(), options,
                                                     {.solid = solid_of(o)})
                                   : geom::mesh_spec(request_spec(r), options);
-    std::vector<std::pair<std::string, std::string>> texts{{report_path, run::run_json(meshed, outputs).dump(2) + "\n"}};
-    for (const std::string& html : html_outputs) texts.emplace_back(html, run::html_report(meshed));
+    std::vector<std::pair<std::string, std::string>> texts{{report_path, job::run_json(meshed, outputs).dump(2) + "\n"}};
+    for (const std::string& html : html_outputs) texts.emplace_back(html, job::html_report(meshed));
     WriteOptions write;
     write.description = &meshed.result.description;  // unit, group kinds and rims in the files
     write.pipe_network = pipe_network_of(o);
-    run::write_all(meshed.result.mesh, mesh_outputs, write, texts);
+    job::write_all(meshed.result.mesh, mesh_outputs, write, texts);
     worker_fault_point("written", id, attempt);
 
     const PipelineResult& p = meshed.result;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -94,4 +94,4 @@ Stage stage_named(const std::string& name, Naming naming) {
     return *stage;
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

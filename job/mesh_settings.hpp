@@ -9,7 +9,7 @@
 
 #include "engine/pipeline/pipeline.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // The documented defaults every field below starts from.
 const MeshOptions& default_mesh_options();
@@ -96,4 +96,4 @@ Stage stage_named(const std::string& name, Naming naming);
 // "sweep, surface, pyramids, tets"
 std::string stage_names();
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -62,7 +62,7 @@ py::object quality(const py::object& self) {
     MeshResult& r = result_of(self);
     if (!r.quality) {
         py::dict out;
-        for (const run::QualityMeasure& m : run::quality_measures()) {
+        for (const job::QualityMeasure& m : job::quality_measures()) {
             std::vector<double> values;
             {
                 py::gil_scoped_release release;
@@ -78,7 +78,7 @@ py::object quality(const py::object& self) {
 
 py::object report(const py::object& self) {
     MeshResult& r = result_of(self);
-    if (!r.report) r.report = py::module_::import("json").attr("loads")(run::run_json(r.run, {}).dump());
+    if (!r.report) r.report = py::module_::import("json").attr("loads")(job::run_json(r.run, {}).dump());
     return r.report;
 }
 
@@ -114,11 +114,11 @@ void write(const py::object& self, const py::object& path, bool msh_ascii, const
            const std::vector<int>& reverse_flow) {
     const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
     const MeshResult& r = result_of(self);
-    run::check_mesh_output(p, r.run.result.reached);
-    WriteOptions options = run::write_options(msh_ascii, inp_family, inp_pyramid, run::Naming::Keywords);
+    job::check_mesh_output(p, r.run.result.reached);
+    WriteOptions options = job::write_options(msh_ascii, inp_family, inp_pyramid, job::Naming::Keywords);
     std::vector<std::string> files{p};
     options.pipe_network =
-        run::pipe_network_options(pipe_network, film_coefficient, reverse_flow, files, run::Naming::Keywords);
+        job::pipe_network_options(pipe_network, film_coefficient, reverse_flow, files, job::Naming::Keywords);
     options.description = &r.run.result.description;
     py::gil_scoped_release release;
     write_mesh(r.run.result.mesh, p, options);
@@ -127,13 +127,13 @@ void write(const py::object& self, const py::object& path, bool msh_ascii, const
 void write_text(const py::object& self, const py::object& path, const char* extension, const char* what,
                 std::string (*text)(const geom::MeshRun&)) {
     const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
-    run::check_report_output(p, extension, what);
+    job::check_report_output(p, extension, what);
     const MeshResult& r = result_of(self);
     py::gil_scoped_release release;
-    run::write_text(p, text(r.run));
+    job::write_text(p, text(r.run));
 }
 
-std::string report_text(const geom::MeshRun& run) { return run::run_json(run, {}).dump(2) + "\n"; }
+std::string report_text(const geom::MeshRun& run) { return job::run_json(run, {}).dump(2) + "\n"; }
 
 }  // namespace
 
@@ -173,7 +173,7 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
         .def_property_readonly("report", &report,
                                "The run's report as a dict: what `tubemesh mesh --report` writes as JSON")
         .def("write", &write, py::arg("path"), py::kw_only(), py::arg("msh_ascii") = false,
-             py::arg("inp_family") = run::kInpFamilies[0], py::arg("inp_pyramid") = run::kInpPyramids[0],
+             py::arg("inp_family") = job::kInpFamilies[0], py::arg("inp_pyramid") = job::kInpPyramids[0],
              py::arg("pipe_network") = false, py::arg("film_coefficient") = py::none(),
              py::arg("reverse_flow") = std::vector<int>{},
              "Writes the mesh; the format by extension: .msh (Gmsh 4.1, binary unless msh_ascii), .vtu, .vtm, .inp "
@@ -189,7 +189,7 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
             py::arg("path"), "Writes the report as JSON (as `tubemesh mesh --report`)")
         .def(
             "write_html", [](py::object self, py::object path) {
-                write_text(self, path, ".html", "the HTML report", run::html_report);
+                write_text(self, path, ".html", "the HTML report", job::html_report);
             },
             py::arg("path"), "Writes the report as one self-contained HTML page (as `tubemesh mesh --html`)")
         .def("__repr__", [](py::object self) {

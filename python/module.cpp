@@ -45,7 +45,7 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
                                  std::optional<int> solid,
                                  const std::string& until,
                                  const py::object& progress) {
-    run::MeshSettings s;
+    job::MeshSettings s;
     s.size = size;
     s.sweep_size = sweep_size;
     s.circumferential = circ;
@@ -53,7 +53,7 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
     if (axial_aspect) s.axial_aspect = *axial_aspect;
     if (chordal) s.chordal = *chordal;
     s.chordal_given = chordal.has_value();
-    if (economy) run::apply_economy(s, {layers.has_value(), axial_aspect.has_value(), chordal.has_value()});
+    if (economy) job::apply_economy(s, {layers.has_value(), axial_aspect.has_value(), chordal.has_value()});
     s.pyramid_height = pyramid_height;
     s.gradation = gradation;
     s.threads = threads;
@@ -64,8 +64,8 @@ std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::op
     s.local_ring = local_ring;
     s.max_elements = max_elements;
     s.solid = solid;
-    s.until = run::stage_named(until, run::Naming::Keywords);
-    MeshOptions options = run::mesh_options(s, run::Naming::Keywords);
+    s.until = job::stage_named(until, job::Naming::Keywords);
+    MeshOptions options = job::mesh_options(s, job::Naming::Keywords);
     const std::string name = path_text(source);
     const bool preset = is_preset(name) && !std::filesystem::exists(name);
 
@@ -93,7 +93,7 @@ py::object check(const py::object& path) {
     {
         py::gil_scoped_release release;
         const HybridMesh mesh = read_msh(p);
-        report = run::check_json(mesh, check_mesh(mesh), summarize_quality(mesh));
+        report = job::check_json(mesh, check_mesh(mesh), summarize_quality(mesh));
     }
     return json_object(report);
 }
@@ -133,7 +133,7 @@ PYBIND11_MODULE(tubemesh, m) {
     py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
     tp::bind_mesh_result(m);
 
-    const run::MeshSettings d;  // the CLI's defaults
+    const job::MeshSettings d;  // the CLI's defaults
     m.def("mesh", &tp::mesh, py::arg("source") = "paper-ex1", py::kw_only(), py::arg("economy") = false,
           py::arg("size") = py::none(), py::arg("sweep_size") = py::none(), py::arg("circ") = py::none(),
           py::arg("layers") = py::none(), py::arg("axial_aspect") = py::none(), py::arg("chordal") = py::none(),

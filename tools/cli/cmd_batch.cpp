@@ -54,9 +54,9 @@ std::vector<batch::BlockRecord> rows_of(const fs::path& outdir) {
 }
 
 int show_status(const BatchArgs& a) {
-    if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
+    if (!a.html.empty()) job::check_report_output(a.html, ".html", "the HTML report");
     const std::vector<batch::BlockRecord> rows = rows_of(a.status_dir);
-    if (!a.html.empty()) run::write_text(a.html, batch::status_html(rows));
+    if (!a.html.empty()) job::write_text(a.html, batch::status_html(rows));
     fmt::print("{}", a.csv ? batch::status_csv(rows) : batch::status_text(rows));
     for (const batch::BlockRecord& r : rows)
         if (r.status != "done") return 1;

@@ -7,7 +7,7 @@
 // CAD solid (or, without IN, the built-in dam block, preset paper-ex1) through geom::mesh_file,
 // show progress, print the phases, Table 1 and where each surface group is, and write the mesh
 // to every OUT (format by extension: .msh, .vtu, .vtm, .inp), the report as JSON and as an HTML
-// page. The options and their defaults are run::MeshSettings, shared with the Python module.
+// page. The options and their defaults are job::MeshSettings, shared with the Python module.
 //
 // Safety: arguments, output formats and folders, and that no two outputs are one file (nor inside
 // a .vtm's parts folder), are checked before any work; the mesh passes the stage's check
@@ -43,11 +43,11 @@ namespace tubemesh::cli {
 namespace {
 
 // The flags bind to plain values; those that are automatic when absent become settings only
-// when given (run::MeshSettings holds the defaults of the rest).
+// when given (job::MeshSettings holds the defaults of the rest).
 struct MeshArgs {
     std::string input;
     std::vector<std::string> outputs;
-    run::MeshSettings settings;
+    job::MeshSettings settings;
     double size = 0, sweep_size = 0, max_elements = 0;
     int circumferential = 0, threads = 0, solid = 0;
     std::string report;
@@ -58,8 +58,8 @@ struct MeshArgs {
     bool assembly = false;
     bool economy = false;
     double glue_tolerance = 0;
-    std::string inp_family = run::kInpFamilies[0];
-    std::string inp_pyramid = run::kInpPyramids[0];
+    std::string inp_family = job::kInpFamilies[0];
+    std::string inp_pyramid = job::kInpPyramids[0];
     bool pipe_network = false;
     double film_coefficient = 0;
     std::vector<int> reverse_flow;
@@ -74,19 +74,19 @@ void take_if_given(std::optional<T>& setting, const CLI::Option* option, T value
 }
 
 // The ranges as parse-time checks in plain numbers (tools/cli/option_checks.hpp).
-CLI::Validator whole_in(run::Range r) {
+CLI::Validator whole_in(job::Range r) {
     return whole_number(static_cast<long long>(r.lo), static_cast<long long>(r.hi));
 }
-CLI::Validator number_in(run::Range r) { return number_between(r.lo, r.hi); }
+CLI::Validator number_in(job::Range r) { return number_between(r.lo, r.hi); }
 
 void check_outputs(const MeshArgs& a, Stage until) {
-    for (const std::string& out : a.outputs) run::check_mesh_output(out, until);
-    if (!a.report.empty()) run::check_report_output(a.report, ".json", "the report");
-    if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
+    for (const std::string& out : a.outputs) job::check_mesh_output(out, until);
+    if (!a.report.empty()) job::check_report_output(a.report, ".json", "the report");
+    if (!a.html.empty()) job::check_report_output(a.html, ".html", "the HTML report");
     std::vector<std::string> all = a.outputs;
     for (const std::string* text : {&a.report, &a.html})
         if (!text->empty()) all.push_back(*text);
-    run::check_distinct_outputs(all);
+    job::check_distinct_outputs(all);
 }
 
 // All files or none: every file is complete under a temporary name before any target is
@@ -96,16 +96,16 @@ void write_all(const geom::MeshRun& meshed, const MeshArgs& a, WriteOptions opti
     options.description = &meshed.result.description;
     std::vector<std::pair<std::string, std::string>> texts;
     if (!a.report.empty()) {
-        nlohmann::json report = run::run_json(meshed, a.outputs);
-        if (assembly) report["assembly"] = run::assembly_json(*assembly, meshed);
+        nlohmann::json report = job::run_json(meshed, a.outputs);
+        if (assembly) report["assembly"] = job::assembly_json(*assembly, meshed);
         texts.emplace_back(a.report, report.dump(2) + "\n");
     }
-    if (!a.html.empty()) texts.emplace_back(a.html, run::html_report(meshed));
-    run::write_all(meshed.result.mesh, a.outputs, options, texts);
+    if (!a.html.empty()) texts.emplace_back(a.html, job::html_report(meshed));
+    job::write_all(meshed.result.mesh, a.outputs, options, texts);
 }
 
 MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
-    run::MeshSettings& s = a.settings;
+    job::MeshSettings& s = a.settings;
     take_if_given(s.size, a.size_option, a.size);
     take_if_given(s.sweep_size, a.sweep_option, a.sweep_size);
     take_if_given(s.circumferential, a.circ_option, a.circumferential);
@@ -114,13 +114,13 @@ MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
     take_if_given(s.solid, a.solid_option, a.solid);
     s.chordal_given = a.chordal_option->count() > 0;
     if (a.economy)
-        run::apply_economy(s, {.layers = a.layers_option->count() > 0,
+        job::apply_economy(s, {.layers = a.layers_option->count() > 0,
                                .axial_aspect = a.axial_option->count() > 0,
                                .chordal = a.chordal_option->count() > 0});
-    MeshOptions o = run::mesh_options(s, run::Naming::Flags);
+    MeshOptions o = job::mesh_options(s, job::Naming::Flags);
     // A phase's end is where its temporaries are gone: hand their pages back before the next.
     o.progress = [line = progress.callback()](const ProgressEvent& e) {
-        if (e.total > 0 && e.done >= e.total) run::return_free_memory();
+        if (e.total > 0 && e.done >= e.total) job::return_free_memory();
         line(e);
     };
     return o;
@@ -130,7 +130,7 @@ MeshOptions mesh_options(MeshArgs& a, ProgressLine& progress) {
 
 Command add_mesh_command(CLI::App& app) {
     auto args = std::make_shared<MeshArgs>();
-    const run::MeshSettings& d = args->settings;  // the defaults, shown in the help
+    const job::MeshSettings& d = args->settings;  // the defaults, shown in the help
     CLI::App* cmd = app.add_subcommand("mesh", "Mesh a CAD solid with tubular holes (hex rings, pyramids, tets)");
     cmd->add_option("IN", args->input,
                     "CAD file (.step .stp .iges .igs .brep); without it, the built-in dam block (paper-ex1)");
@@ -150,45 +150,45 @@ Command add_mesh_command(CLI::App& app) {
     args->circ_option =
         cmd->add_option("--circ", args->circumferential,
                         "Nodes around each tube, n (default: the multiple of 4 nearest 2 pi (r + St/2) / St, at least 8)")
-            ->check(whole_in(run::kCircRange));
+            ->check(whole_in(job::kCircRange));
     args->chordal_option = cmd->add_option("--chordal", args->settings.chordal,
                     fmt::format("Curved CAD edges: largest gap between a chord and the curve over the chord's length "
                                 "(default {}: a segment turns by at most {:.3f} rad)",
                                 d.chordal, geom::chordal_turn(d.chordal)))
-        ->check(number_in(run::kChordalRange));
+        ->check(number_in(job::kChordalRange));
     args->layers_option = cmd->add_option("--layers", args->settings.layers,
                     fmt::format("Hex layers across the ring, L (default {}, graded {} towards the wall)", d.layers,
-                                run::default_mesh_options().sweep.grading))
-        ->check(whole_in(run::kLayersRange));
+                                job::default_mesh_options().sweep.grading))
+        ->check(whole_in(job::kLayersRange));
     args->axial_option = cmd->add_option("--axial-aspect", args->settings.axial_aspect,
                     fmt::format("Axial step of the hex rings over St (default {})", d.axial_aspect))
-        ->check(number_in(run::kAxialAspectRange));
+        ->check(number_in(job::kAxialAspectRange));
     cmd->add_option("--pyramid-height", args->settings.pyramid_height,
                     fmt::format("Pyramid apex height over the quad's mean edge (default {}, the paper's)",
                                 d.pyramid_height))
-        ->check(number_in(run::kPyramidHeightRange));
+        ->check(number_in(job::kPyramidHeightRange));
     cmd->add_option("--gradation", args->settings.gradation,
                     fmt::format("Largest growth of the tet size from one element to the next (default {})",
                                 d.gradation))
-        ->check(number_in(run::kGradationRange));
+        ->check(number_in(job::kGradationRange));
     cmd->add_flag("--economy", args->economy,
                   fmt::format("The paper's economy: {} nodes around each tube in {} hex layers, St = {} S (at most 12.5 "
                               "tube radii, cut by the rules), axial step {} x the ring's outer side, curved edges to --chordal {}; about half "
                               "the default's elements, which keeps quality first. Options given beside it win",
-                              run::kEconomy.circumferential, run::kEconomy.layers, run::kEconomy.sweep_share,
-                              run::kEconomy.axial_aspect, run::kEconomy.chordal));
+                              job::kEconomy.circumferential, job::kEconomy.layers, job::kEconomy.sweep_share,
+                              job::kEconomy.axial_aspect, job::kEconomy.chordal));
     args->threads_option = cmd->add_option("--threads", args->threads, "Worker threads (default: all cores; more than the cores are not used)")
-                               ->check(whole_in(run::kThreadsRange));
+                               ->check(whole_in(job::kThreadsRange));
     cmd->add_option("--tet-parts", args->settings.tet_parts,
                     fmt::format("Spatial parts of the tet step's parallel Delaunay passes (default {}: the mesh is "
                                 "the same for any --threads; 0: one per thread, the mesh then depends on it)",
                                 d.tet_parts))
-        ->check(whole_in(run::kTetPartsRange));
+        ->check(whole_in(job::kTetPartsRange));
     cmd->add_option("--tet-relax", args->settings.tet_relax,
                     fmt::format("ODT relaxation rounds of the tet step's interior points before the optimisation "
                                 "(default {}; 0: none, mean collapse about 0.01 lower, time within about 15 % either way)",
                                 d.tet_relax))
-        ->check(whole_in(run::kTetRelaxRange));
+        ->check(whole_in(job::kTetRelaxRange));
     cmd->add_flag("--move-apexes", args->settings.move_apexes,
                   "Let the tet optimisation move the pyramid apexes, each pyramid kept at a scaled Jacobian of at "
                   "least 0.5: the tets' minimum and mean rise, the pyramids' fall (default: apexes stay where the "
@@ -215,8 +215,8 @@ Command add_mesh_command(CLI::App& app) {
                     "Also write the report as one self-contained HTML page (Table 1, histograms, phase times, a 3D "
                     "view of the hybrid layer around the pipes)");
     args->solid_option = cmd->add_option("--solid", args->solid, "Which solid of the file, 1-based (when it holds several)")
-                             ->check(whole_in(run::kSolidRange));
-    cmd->add_option("--until", args->until_name, "Last stage to run: " + run::stage_names() + " (default: the last)")
+                             ->check(whole_in(job::kSolidRange));
+    cmd->add_option("--until", args->until_name, "Last stage to run: " + job::stage_names() + " (default: the last)")
         ->option_text("STAGE");
     cmd->add_flag("--assembly", args->assembly,
                   "IN holds several solids that share faces (or touch within --glue-tolerance): mesh them as one "
@@ -232,11 +232,11 @@ Command add_mesh_command(CLI::App& app) {
                     "too), heat (DC3D4/DC3D8, Abaqus and CalculiX), coupled (coupled temperature-displacement for "
                     "CalculiX: C3D4/C3D8, which its *COUPLED TEMPERATURE-DISPLACEMENT step gives the temperature), "
                     "coupled-abaqus (C3D4T/C3D8T: Abaqus only, CalculiX refuses them)")
-        ->check(CLI::IsMember(run::kInpFamilies));
+        ->check(CLI::IsMember(job::kInpFamilies));
     cmd->add_option("--inp-pyramid", args->inp_pyramid,
                     "Pyramids in .inp files: hex (a C3D8 with the apex repeated, which CalculiX and Abaqus read; "
                     "default) or c3d5 (the 5-node pyramid, stress family only: Abaqus only, CalculiX refuses it)")
-        ->check(CLI::IsMember(run::kInpPyramids));
+        ->check(CLI::IsMember(job::kInpPyramids));
     cmd->add_flag("--pipe-network", args->pipe_network,
                   "Write the water in every pipe into the .inp as a CalculiX fluid network (sets pipe_<k>_water, "
                   "_water_in, _water_out, _water_flow, WATER) and X.films.inp beside X.inp: one *FILM line per wall "
@@ -258,7 +258,7 @@ Command add_mesh_command(CLI::App& app) {
         "Exit status: 0 meshed and written, 2 on any error (one line on stderr, no file written).");
 
     return {cmd, [args]() -> int {
-        const Stage until = run::stage_named(args->until_name, run::Naming::Flags);
+        const Stage until = job::stage_named(args->until_name, job::Naming::Flags);
         args->settings.until = until;
         // A report alone is a run that writes only the report; with nothing asked for, the dam block's
         // default files.
@@ -269,13 +269,13 @@ Command add_mesh_command(CLI::App& app) {
             args->outputs = {"dam_block.msh", "dam_block.vtu"};
         }
         check_outputs(*args, until);
-        WriteOptions write = run::write_options(args->msh_ascii, args->inp_family, args->inp_pyramid, run::Naming::Flags);
+        WriteOptions write = job::write_options(args->msh_ascii, args->inp_family, args->inp_pyramid, job::Naming::Flags);
         std::vector<std::string> files = args->outputs;
         std::optional<double> film;
         take_if_given(film, args->film_option, args->film_coefficient);
         write.pipe_network =
-            run::pipe_network_options(args->pipe_network, film, args->reverse_flow, files, run::Naming::Flags);
-        if (write.pipe_network.write) run::check_distinct_outputs(files);
+            job::pipe_network_options(args->pipe_network, film, args->reverse_flow, files, job::Naming::Flags);
+        if (write.pipe_network.write) job::check_distinct_outputs(files);
         ProgressLine progress(ProgressLine::mode_for(args->quiet));
         MeshOptions options = mesh_options(*args, progress);
         auto say = [&](const std::string& s) {
@@ -327,22 +327,22 @@ Command add_mesh_command(CLI::App& app) {
         for (const std::string& w : r.warnings) fmt::print(stderr, "tubemesh: warning: {}\n", w);
         if (write.inp_pyramid == InpPyramid::C3D5 && r.mesh.cell_count(CellKind::Pyramid) > 0)
             for (const std::string& out : args->outputs)
-                if (run::lower_extension(out) == ".inp")
+                if (job::lower_extension(out) == ".inp")
                     fmt::print(stderr, "tubemesh: warning: {} holds C3D5 pyramids, which only Abaqus reads (CalculiX "
                                "refuses them: leave --inp-pyramid out for bricks with the apex repeated)\n", out);
         if (r.reached != kLastStage)
             say(fmt::format("note: stopped after the {} stage (--until)", stage_name(r.reached)));
         say("");
-        for (const std::string& line : run::phase_lines(meshed)) say(line);
+        for (const std::string& line : job::phase_lines(meshed)) say(line);
         const HybridMesh& mesh = r.mesh;
         say(fmt::format("\n{} nodes, {} hexahedra, {} pyramids, {} tetrahedra; {} boundary triangles, {} boundary quads",
                         mesh.point_count(), mesh.cell_count(CellKind::Hex), mesh.cell_count(CellKind::Pyramid),
                         mesh.cell_count(CellKind::Tet), mesh.face_count(FaceKind::Tri),
                         mesh.face_count(FaceKind::Quad)));
-        fmt::print("\n{}\n", run::run_table(meshed));
+        fmt::print("\n{}\n", job::run_table(meshed));
         if (assembly)
-            for (const std::string& line : run::assembly_lines(*assembly, meshed)) say(line);
-        for (const std::string& line : run::group_lines(meshed)) say(line);
+            for (const std::string& line : job::assembly_lines(*assembly, meshed)) say(line);
+        for (const std::string& line : job::group_lines(meshed)) say(line);
         for (const std::string& out : args->outputs) say("wrote " + out);
         if (!args->report.empty()) say("wrote " + args->report);
         if (!args->html.empty()) say("wrote " + args->html);

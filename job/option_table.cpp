@@ -75,13 +75,13 @@ std::vector<OptionSpec> make_table() {
     t.push_back(number("chordal", "C", kChordalRange, d.chordal,
                        fmt::format("{}: a segment turns by at most {:.3f} rad", d.chordal, geom::chordal_turn(d.chordal)),
                        "Curved CAD edges: largest gap between a chord and the curve over the chord's length"));
-    t.push_back(on_off("economy", "off",
+    t.push_back(added_later(on_off("economy", "off",
                        fmt::format("The paper's economy: {} nodes around each tube in {} hex layers, St = {} S (at most "
                                    "12.5 tube radii, cut by the rules), axial step {} x the ring's outer side, curved "
                                    "edges to chordal {}, one St for every tube; about half the default's elements. "
                                    "Options given beside it win",
                                    kEconomy.circumferential, kEconomy.layers, kEconomy.sweep_share,
-                                   kEconomy.axial_aspect, kEconomy.chordal)));
+                                   kEconomy.axial_aspect, kEconomy.chordal))));
     t.push_back(number("pyramid_height", "F", kPyramidHeightRange, d.pyramid_height,
                        fmt::format("{}, the paper's", d.pyramid_height), "Pyramid apex height over the quad's mean edge"));
     t.push_back(number("gradation", "G", kGradationRange, d.gradation, fmt::format("{}", d.gradation),

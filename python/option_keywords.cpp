@@ -69,7 +69,7 @@ std::string option_lines() {
     std::string out;
     for (const job::OptionSpec& s : job::option_table()) {
         if (!(s.shown & job::kPython)) continue;
-        std::string line = fmt::format("{}={}: {} (default: {}", s.key, s.fallback.is_null() ? "None" : s.fallback.dump(),
+        std::string line = fmt::format("{}={}: {} (default: {}", s.key, py::repr(python_default(s)).cast<std::string>(),
                                        s.help, s.default_text);
         if (!s.units.empty()) line += "; " + s.units;
         line += ")";

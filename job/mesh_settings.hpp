@@ -1,9 +1,8 @@
 #pragma once
-// The options of one meshing run as a user gives them: `tubemesh mesh`'s flags and the Python
-// module's keywords. One struct, one validation, one translation into MeshOptions, so the two
-// front ends take the same values with the same defaults and refuse the same ones with the
-// same message. Defaults are MeshOptions' own (engine/pipeline/pipeline.hpp documents each);
-// an empty optional is "automatic".
+// The meshing options of one run, as job_settings (job/job_settings.hpp) makes them from the
+// option table's values (job/option_table.hpp) for every front end: one struct, one validation,
+// one translation into MeshOptions. Defaults are MeshOptions' own (engine/pipeline/pipeline.hpp
+// documents each); an empty optional is "automatic".
 #include <optional>
 #include <string>
 

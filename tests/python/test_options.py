@@ -40,3 +40,14 @@ def test_files_and_write_options_as_the_command_line(tmp_path):
     assert "DC3D4" in (tmp_path / "c.inp").read_text()
     m.write(tmp_path / "d.inp", inp_family="stress")
     assert "DC3D4" not in (tmp_path / "d.inp").read_text()
+
+
+def test_the_manifest_schema_and_the_signature_share_the_options(cli):
+    import subprocess
+    schema = json.loads(subprocess.run([cli, "batch", "--schema"], capture_output=True, text=True, check=True).stdout)
+    assert schema["fixed_surface"]["deprecated_names"] == ["slide_surface"]
+    assert schema["time_limit"]["default"] == 3600
+    params = inspect.signature(tubemesh.mesh).parameters
+    for key in set(schema) - {"formats", "time_limit"}:  # the batch's own: it names the files and kills workers
+        assert key in params, key
+        assert params[key].default == schema[key]["default"], key

@@ -39,9 +39,9 @@ CLI::Option* add(CLI::App* cmd, const std::string& names, const job::OptionSpec&
     case OptionType::Text:
         return cmd->add_option(names, v.emplace<std::string>(), help)->option_text(s.value_name);
     case OptionType::WholeList:
-        // One value per flag: the next word may be the input file.
+        // One value per flag: the next word may be the input file. The job checks the values (a
+        // message that says what they number).
         return cmd->add_option(names, v.emplace<std::vector<long long>>(), help)
-            ->check(range_check(s))
             ->option_text(s.value_name)
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

@@ -142,15 +142,16 @@ std::vector<OptionSpec> make_table() {
     t.push_back(formats);
     t.push_back(added_later(on_off("msh_ascii", "off: binary", "Write .msh files as text")));
     OptionSpec family = text("inp_family", T::Choice, "FAMILY", kInpFamilies[0], kInpFamilies[0],
-                             "Element family of .inp files: stress (C3D4/C3D8), heat (DC3D4/DC3D8), coupled "
-                             "(C3D4/C3D8 for CalculiX's coupled temperature-displacement step), coupled-abaqus "
-                             "(C3D4T/C3D8T, Abaqus only)",
+                             "Element family of .inp files: stress (C3D4/C3D8; CalculiX uses them for heat transfer too), heat "
+                             "(DC3D4/DC3D8, Abaqus and CalculiX), coupled (coupled temperature-displacement for "
+                             "CalculiX: C3D4/C3D8, which its coupled step gives the temperature), coupled-abaqus "
+                             "(C3D4T/C3D8T: Abaqus only, CalculiX refuses them)",
                              kAllFrontEnds);
     family.choices = kInpFamilies;
     t.push_back(added_later(family));
     OptionSpec pyramid = text("inp_pyramid", T::Choice, "FORM", kInpPyramids[0], kInpPyramids[0],
-                              "Pyramids in .inp files: hex (a C3D8 with the apex repeated) or c3d5 (the 5-node "
-                              "pyramid, stress family only, Abaqus only)",
+                              "Pyramids in .inp files: hex (a C3D8 with the apex repeated, which CalculiX and Abaqus read) or "
+                              "c3d5 (the 5-node pyramid, stress family only: Abaqus only, CalculiX refuses it)",
                               kAllFrontEnds);
     pyramid.choices = kInpPyramids;
     t.push_back(added_later(pyramid));

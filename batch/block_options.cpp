@@ -2,165 +2,107 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-#include <optional>
+#include <iostream>
 
 #include "batch/sha256.hpp"
 #include "engine/core/types.hpp"
-#include "job/mesh_settings.hpp"
+#include "job/option_table.hpp"
 #include "job/outputs.hpp"
 
 namespace tubemesh::batch {
 
 namespace {
 
-struct Key {
-    const char* name;
-    bool whole;     // a whole number
-    bool nullable;  // null: automatic
-};
-constexpr Key kNumbers[] = {{"size", false, true},          {"sweep_size", false, true},   {"circ", true, true},
-                            {"layers", true, false},        {"axial_aspect", false, false}, {"chordal", false, false},
-                            {"pyramid_height", false, false}, {"gradation", false, false}, {"tet_parts", true, false},
-                            {"tet_relax", true, false},     {"max_elements", false, true}, {"solid", true, true},
-                            {"time_limit", false, false}, {"film_coefficient", false, false}};
+using json = nlohmann::json;
 
-void check_formats(const nlohmann::json& v, const std::string& where) {
-    if (!v.is_array() || v.empty()) throw Error(where + ": \"formats\" must be a non-empty list such as [\"msh\"]");
-    for (const nlohmann::json& f : v)
-        if (!f.is_string() || (f != "msh" && f != "vtu" && f != "inp" && f != "html"))
-            throw Error(where + ": \"formats\" takes \"msh\", \"vtu\", \"inp\" and \"html\" (the block's report), got " +
-                        f.dump());
-}
-
-// Types here; ranges by run::mesh_options once the block's options are complete.
-void check_value(const std::string& key, const nlohmann::json& v, const std::string& where) {
-    if (key == "formats") return check_formats(v, where);
-    if (key == "reverse_flow") {
-        if (!v.is_array()) throw Error(fmt::format("{}: \"reverse_flow\" must be a list of pipe numbers, got {}", where, v.dump()));
-        for (const nlohmann::json& k : v)
-            if (!k.is_number_integer())
-                throw Error(fmt::format("{}: \"reverse_flow\" takes whole pipe numbers, got {}", where, k.dump()));
-        return;
-    }
-    if (key == "move_apexes" || key == "slide_surface" || key == "pipe_network" ||
-        key == "local_ring") {
-        if (!v.is_boolean()) throw Error(fmt::format("{}: \"{}\" must be true or false, got {}", where, key, v.dump()));
-        return;
-    }
-    for (const Key& k : kNumbers) {
-        if (key != k.name) continue;
-        const bool automatic = v.is_null() && k.nullable;
-        if (!automatic && !(v.is_number() && std::isfinite(v.get<double>())))
-            throw Error(fmt::format("{}: \"{}\" must be a number{}, got {}", where, key,
-                                    k.nullable ? " or null (automatic)" : "", v.dump()));
-        // Whole numbers become ints: beyond that range they are out of every option's range anyway.
-        if (!automatic && k.whole &&
-            (v.get<double>() != std::floor(v.get<double>()) || std::abs(v.get<double>()) > 1e9))
-            throw Error(fmt::format("{}: \"{}\" must be a whole number of at most 1e9, got {}", where, key, v.dump()));
-        if (key == "time_limit" && v.get<double>() < 0)
-            throw Error(fmt::format("{}: \"time_limit\" must be at least 0 (0: none), got {}", where, v.dump()));
-        return;
-    }
-    throw Error(where + ": unknown option \"" + key + "\"");
-}
-
-template <class T>
-std::optional<T> optional_of(const nlohmann::json& o, const char* key) {
-    if (o.at(key).is_null()) return std::nullopt;
-    return o.at(key).get<T>();
-}
-
-run::MeshSettings settings_of(const nlohmann::json& o) {
-    run::MeshSettings s;
-    s.size = optional_of<double>(o, "size");
-    s.sweep_size = optional_of<double>(o, "sweep_size");
-    s.circumferential = optional_of<int>(o, "circ");
-    s.layers = o.at("layers").get<int>();
-    s.axial_aspect = o.at("axial_aspect").get<double>();
-    s.chordal = o.at("chordal").get<double>();
-    s.move_apexes = o.at("move_apexes").get<bool>();
-    s.slide_surface = o.at("slide_surface").get<bool>();
-    s.local_ring = o.at("local_ring").get<bool>();
-    s.pyramid_height = o.at("pyramid_height").get<double>();
-    s.gradation = o.at("gradation").get<double>();
-    s.tet_parts = o.at("tet_parts").get<int>();
-    s.tet_relax = o.at("tet_relax").get<int>();
-    s.max_elements = optional_of<double>(o, "max_elements");
-    s.solid = optional_of<int>(o, "solid");
-    return s;
-}
+bool in_manifest(const job::OptionSpec& s) { return s.shown & job::kManifest; }
 
 }  // namespace
 
-nlohmann::json default_block_options() {
-    const run::MeshSettings d;
-    return {{"size", nullptr},
-            {"sweep_size", nullptr},
-            {"circ", nullptr},
-            {"layers", d.layers},
-            {"axial_aspect", d.axial_aspect},
-            {"chordal", d.chordal},
-            {"pyramid_height", d.pyramid_height},
-            {"gradation", d.gradation},
-            {"tet_parts", d.tet_parts},
-            {"tet_relax", d.tet_relax},
-            {"move_apexes", d.move_apexes},
-            {"slide_surface", d.slide_surface},
-            {"local_ring", d.local_ring},
-            {"max_elements", nullptr},
-            {"solid", nullptr},
-            {"formats", {"msh"}},
-            {"pipe_network", false},
-            {"film_coefficient", PipeNetworkOptions{}.film_coefficient},
-            {"reverse_flow", nlohmann::json::array()},
-            {"time_limit", 3600.0}};
+json default_block_options() {
+    json out = json::object();
+    for (const job::OptionSpec& s : job::option_table())
+        if (in_manifest(s)) out[s.key] = s.fallback;
+    return out;
 }
 
-nlohmann::json merge_block_options(const nlohmann::json& base, const nlohmann::json& overrides,
-                                   const std::string& where) {
+json manifest_schema() {
+    json out = json::object();
+    for (const job::OptionSpec& s : job::option_table()) {
+        if (!in_manifest(s)) continue;
+        json entry = {{"default", s.fallback}, {"help", s.help}, {"default_text", s.default_text}};
+        if (!s.units.empty()) entry["units"] = s.units;
+        if (!s.choices.empty()) entry["choices"] = s.choices;
+        if (s.type == job::OptionType::Number || s.type == job::OptionType::Whole) entry["range"] = {s.lo, s.hi};
+        for (const job::OptionAlias& a : s.aliases)
+            if (a.shown & job::kManifest) entry["deprecated_names"].push_back(a.name);
+        out[s.key] = entry;
+    }
+    return out;
+}
+
+json merge_block_options(const json& base, const json& overrides, const std::string& where) {
     if (overrides.is_null()) return base;
     if (!overrides.is_object()) throw Error(where + ": options must be an object");
-    nlohmann::json out = base;
-    for (const auto& [key, value] : overrides.items()) {
-        check_value(key, value, where);
-        out[key] = value;
-    }
+    json out = base;
+    const json given = job::canonical_options(overrides, job::kManifest, where, [&](const std::string& message) {
+        std::cerr << "tubemesh: warning: " << where << ": " << message << "\n";
+    });
+    for (const auto& [key, value] : given.items()) out[key] = value;
+    if (out.at("time_limit").get<double>() < 0)
+        throw Error(fmt::format("{}: \"time_limit\" must be at least 0 (0: none), got {}", where, out["time_limit"].dump()));
     try {
-        run::mesh_options(settings_of(out), run::Naming::Keywords);
-        pipe_network_of(out);
+        job::JobSettings s = settings_of(out);
+        std::vector<std::string> outputs = block_outputs(out);
+        job::job_write_options(s, outputs, job::Naming::Keywords);
     } catch (const Error& e) {
         throw Error(where + ": " + e.what());
     }
     return out;
 }
 
-std::string options_hash(const nlohmann::json& options) {
-    nlohmann::json keyed = options;
-    keyed.erase("time_limit");
-    // Numbers as doubles, so 1 and 1.0 hash alike.
-    for (auto& [key, value] : keyed.items())
-        if (value.is_number()) value = value.get<double>();
+std::string options_hash(const json& options) {
+    // The names and options the hash has always had: an option added since enters only away from
+    // its default, under its first name, so a block's hash (and its mesh) stays what it was.
+    json keyed = json::object();
+    for (const job::OptionSpec& s : job::option_table()) {
+        if (!in_manifest(s) || s.hashed == job::Hashed::Never || !options.contains(s.key)) continue;
+        json value = options.at(s.key);
+        if (s.hashed == job::Hashed::WhenChanged && value == s.fallback) continue;
+        std::string name = s.key;
+        for (const job::OptionAlias& a : s.aliases)
+            if (s.hash_name == a.name) {
+                name = a.name;
+                value = job::value_from_alias({&s, &a}, value);
+            }
+        // Numbers as doubles, so 1 and 1.0 hash alike.
+        keyed[name] = value.is_number() ? json(value.get<double>()) : value;
+    }
     keyed["tubemesh"] = TUBEMESH_VERSION;
     return sha256_hex(keyed.dump());
 }
 
-MeshOptions mesh_options(const nlohmann::json& o, int threads) {
-    run::MeshSettings s = settings_of(o);
-    s.threads = threads;
-    return run::mesh_options(s, run::Naming::Keywords);
+job::JobSettings settings_of(const json& options) {
+    // The options away from their defaults are the ones given (economy sets what is not given).
+    json given = json::object();
+    for (const auto& [key, value] : options.items())
+        if (const job::OptionSpec* s = job::find_option(key); s && value != s->fallback) given[key] = value;
+    return job::job_settings(given, job::Naming::Keywords);
 }
 
-PipeNetworkOptions pipe_network_of(const nlohmann::json& o) {
+std::vector<std::string> block_outputs(const json& options) {
     std::vector<std::string> outputs;
-    for (const nlohmann::json& f : o.at("formats"))
-        if (f == "inp") outputs.push_back("block.inp");
-    const double h = o.at("film_coefficient").get<double>();
-    return run::pipe_network_options(o.at("pipe_network").get<bool>(),
-                                     h == PipeNetworkOptions{}.film_coefficient ? std::nullopt : std::optional(h),
-                                     o.at("reverse_flow").get<std::vector<int>>(), outputs, run::Naming::Keywords);
+    for (const json& f : options.at("formats"))
+        if (f != "html") outputs.push_back("block." + f.get<std::string>());
+    return outputs;
 }
 
-int solid_of(const nlohmann::json& o) { return o.at("solid").is_null() ? 0 : o.at("solid").get<int>(); }
+MeshOptions mesh_options(const json& o, int threads) {
+    job::JobSettings s = settings_of(o);
+    s.mesh.threads = threads;
+    return job::mesh_options(s.mesh, job::Naming::Keywords);
+}
+
+int solid_of(const json& o) { return o.at("solid").is_null() ? 0 : o.at("solid").get<int>(); }
 
 }  // namespace tubemesh::batch

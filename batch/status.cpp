@@ -83,7 +83,8 @@ std::string status_csv(const std::vector<BlockRecord>& rows) {
 
     std::string out =
         "id,status,error,input_sha256,options_sha256,nodes,hexes,pyramids,tets,tet_collapse_min,tet_collapse_mean,"
-        "pyramid_jacobian_min,pyramid_jacobian_mean,hex_jm_min,hex_jm_mean,hex_cond_max,seconds";
+        "pyramid_scaled_jacobian_min,pyramid_scaled_jacobian_mean,hex_scaled_jacobian_min,hex_scaled_jacobian_mean,"
+        "hex_condition_max,seconds";
     for (const std::string& p : phases) out += ",seconds_" + p;
     out += ",outputs,report,worker\n";
     for (const BlockRecord& r : rows) {

@@ -28,8 +28,8 @@ std::string status_html(const std::vector<BlockRecord>& rows) {
                           {"hex_condition_max", r.hex_condition_max},
                           {"html", html}});
     }
-    const run::HtmlAssets& a = run::html_assets();
-    return run::html_page(a.batch_body, {{"blocks", blocks}}, {a.chart_js, a.batch_js});
+    const job::HtmlAssets& a = job::html_assets();
+    return job::html_page(a.batch_body, {{"blocks", blocks}}, {a.chart_js, a.batch_js});
 }
 
 }  // namespace tubemesh::batch

@@ -19,8 +19,7 @@
 #include "geom/mesh_file.hpp"
 #include "geom/prepare.hpp"
 #include "geom/working_scale.hpp"
-#include "job/html_report.hpp"
-#include "job/mesh_report.hpp"
+#include "job/mesh_job.hpp"
 #include "job/outputs.hpp"
 
 namespace tubemesh::batch {
@@ -81,25 +80,21 @@ nlohmann::json mesh(const nlohmann::json& r) {
 
     const nlohmann::json& o = r.at("options");
     const std::vector<std::string> outputs = r.at("outputs").get<std::vector<std::string>>();
-    std::vector<std::string> mesh_outputs, html_outputs;  // the HTML report is written as text
-    for (const std::string& out : outputs) (run::lower_extension(out) == ".html" ? html_outputs : mesh_outputs).push_back(out);
-    const std::string report_path = r.at("report").get<std::string>();
-    for (const std::string& out : mesh_outputs) run::check_mesh_output(out, kLastStage);
-    run::check_report_output(report_path, ".json", "the report");
+    job::JobSettings settings = settings_of(o);
+    settings.mesh.threads = r.at("threads").get<int>();
+    for (const std::string& out : outputs) {
+        if (job::lower_extension(out) != ".html") settings.outputs.push_back(out);
+        else settings.html = out;  // the HTML report is written as text
+    }
+    settings.report = r.at("report").get<std::string>();
     for (const std::string& out : outputs) remove_stale_temporaries(out);
-    remove_stale_temporaries(report_path);
+    remove_stale_temporaries(settings.report);
 
-    const MeshOptions options = mesh_options(o, r.at("threads").get<int>());
-    const geom::MeshRun meshed = r.contains("cad")
-                                  ? geom::mesh_file(r.at("cad").get<std::string>(), options,
-                                                    {.solid = solid_of(o)})
-                                  : geom::mesh_spec(request_spec(r), options);
-    std::vector<std::pair<std::string, std::string>> texts{{report_path, run::run_json(meshed, outputs).dump(2) + "\n"}};
-    for (const std::string& html : html_outputs) texts.emplace_back(html, run::html_report(meshed));
-    WriteOptions write;
-    write.description = &meshed.result.description;  // unit, group kinds and rims in the files
-    write.pipe_network = pipe_network_of(o);
-    run::write_all(meshed.result.mesh, mesh_outputs, write, texts);
+    job::JobSource source;
+    if (r.contains("cad")) source.cad = r.at("cad").get<std::string>();
+    else source.spec = request_spec(r);
+    const job::JobResult job = job::run_mesh_job(source, settings, {.naming = job::Naming::Keywords});
+    const geom::MeshRun& meshed = job.run;
     worker_fault_point("written", id, attempt);
 
     const PipelineResult& p = meshed.result;
@@ -116,13 +111,13 @@ nlohmann::json mesh(const nlohmann::json& r) {
             {"tets", m.cell_count(CellKind::Tet)},
             {"quality",
              {{"tet_collapse", measure(p.quality.tet_collapse)},
-              {"pyramid_jacobian", measure(p.quality.pyramid_jacobian)},
-              {"hex_jacobian", measure(p.quality.hex_scaled_jacobian)},
+              {"pyramid_scaled_jacobian", measure(p.quality.pyramid_jacobian)},
+              {"hex_scaled_jacobian", measure(p.quality.hex_scaled_jacobian)},
               {"hex_condition", measure(p.quality.hex_condition)}}},
             {"phases", phases},
             {"seconds", p.seconds},
             {"outputs", files},
-            {"report", fs::path(report_path).filename().string()}};
+            {"report", fs::path(settings.report).filename().string()}};
 }
 
 bool write_all(int fd, const std::string& text) {
@@ -201,8 +196,8 @@ BlockRecord record_from_result(const BlockEntry& b, const nlohmann::json& result
     const nlohmann::json& q = result.at("quality");
     auto m = [&](const char* k) { return MeasureRecord{q.at(k).at("min").get<double>(), q.at(k).at("mean").get<double>()}; };
     r.tet_collapse = m("tet_collapse");
-    r.pyramid_jacobian = m("pyramid_jacobian");
-    r.hex_jacobian = m("hex_jacobian");
+    r.pyramid_jacobian = m("pyramid_scaled_jacobian");
+    r.hex_jacobian = m("hex_scaled_jacobian");
     r.hex_condition_max = q.at("hex_condition").at("max").get<double>();
     for (const nlohmann::json& ph : result.at("phases"))
         r.phases.emplace_back(ph.at(0).get<std::string>(), ph.at(1).get<double>());

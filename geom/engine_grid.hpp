@@ -11,7 +11,7 @@
 
 #include "engine/geometry/surface_map.hpp"
 #include "engine/geometry/tube_data.hpp"
-#include "engine/surface/size_field.hpp"
+#include "engine/sizing/field/size_field.hpp"
 
 namespace tubemesh::geom {
 

@@ -8,7 +8,7 @@
 #include "job/mesh_report.hpp"
 #include "job/quality_table.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -109,4 +109,4 @@ nlohmann::json assembly_json(const geom::AssemblyRun& run, const geom::MeshRun& 
             {"volume_mismatch", volume_mismatch(run, whole)}};
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -8,7 +8,7 @@
 
 #include "geom/assembly/mesh_assembly.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // `whole` is the run's mesh and report: run.run, or where the caller moved it.
 
@@ -22,4 +22,4 @@ std::vector<std::string> assembly_lines(const geom::AssemblyRun& run, const geom
 // The same as JSON: {"solids": [...], "shared_faces", "shared_triangles", "glue_tolerance", ...}.
 nlohmann::json assembly_json(const geom::AssemblyRun& run, const geom::MeshRun& whole);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

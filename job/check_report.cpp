@@ -2,7 +2,7 @@
 
 #include "job/quality_table.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -43,4 +43,4 @@ nlohmann::json check_json(const HybridMesh& mesh, const CheckReport& report, con
             {"quality", quality_json(q)}};
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

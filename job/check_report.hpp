@@ -6,8 +6,8 @@
 #include "engine/check/mesh_check.hpp"
 #include "engine/quality/quality.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 nlohmann::json check_json(const HybridMesh& mesh, const CheckReport& report, const QualitySummary& q);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -8,7 +8,7 @@
 
 #include "engine/core/vec3_ops.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -167,4 +167,4 @@ nlohmann::json cut_view_json(const geom::MeshRun& run, const std::array<std::vec
             {"worst", worst}};
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

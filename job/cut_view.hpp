@@ -17,7 +17,7 @@
 
 #include "geom/mesh_file.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // At most this many cells: a few thousand keep the page small and the view legible.
 inline constexpr std::size_t kCutCells = 3000;
@@ -29,4 +29,4 @@ inline constexpr std::size_t kCutCells = 3000;
 nlohmann::json cut_view_json(const geom::MeshRun& run, const std::array<std::vector<double>, kCellKindCount>& primary,
                              std::size_t max_cells = kCutCells);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

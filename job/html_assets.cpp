@@ -17,7 +17,7 @@ TUBEMESH_INCBIN(tubemesh_page_body, TUBEMESH_PAGE_BODY)
 TUBEMESH_INCBIN(tubemesh_batch_js, TUBEMESH_BATCH_JS)
 TUBEMESH_INCBIN(tubemesh_batch_body, TUBEMESH_BATCH_BODY)
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 std::string_view between(const char* begin, const char* end) {
@@ -39,4 +39,4 @@ const HtmlAssets& html_assets() {
     return assets;
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -4,7 +4,7 @@
 // without network, and the pages' own scripts, style and bodies (job/html/).
 #include <string_view>
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 struct HtmlAssets {
     std::string_view three_js, orbit_controls_js, chart_js;
@@ -14,4 +14,4 @@ struct HtmlAssets {
 
 const HtmlAssets& html_assets();
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -9,7 +9,7 @@
 #include "job/mesh_report.hpp"
 #include "job/quality_measures.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -99,4 +99,4 @@ std::string html_page(std::string_view body, const nlohmann::json& data, std::in
     return page;
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

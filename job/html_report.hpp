@@ -11,7 +11,7 @@
 
 #include "geom/mesh_file.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 std::string html_report(const geom::MeshRun& run);
 
@@ -19,4 +19,4 @@ std::string html_report(const geom::MeshRun& run);
 // "tubemesh-data" the scripts read, then the scripts inlined in order.
 std::string html_page(std::string_view body, const nlohmann::json& data, std::initializer_list<std::string_view> scripts);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

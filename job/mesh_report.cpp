@@ -7,7 +7,7 @@
 #include "job/paper_table.hpp"
 #include "job/quality_table.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -166,4 +166,4 @@ nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>
     return report;
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -9,7 +9,7 @@
 #include "geom/mesh_file.hpp"
 #include "job/quality_table.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // "sweep      0.043 s  1 tubes, 8952 nodes, ...; min J_m 0.9239, max cond 2.387", one per phase.
 std::vector<std::string> phase_lines(const geom::MeshRun& run);
@@ -27,4 +27,4 @@ std::vector<TableRow> run_table_rows(const geom::MeshRun& run);
 // one of the paper's examples.
 nlohmann::json run_json(const geom::MeshRun& run, const std::vector<std::string>& outputs);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -6,7 +6,7 @@
 
 #include "geom/engine_grid.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -97,4 +97,4 @@ Stage stage_named(const std::string& name, Naming naming) {
     return *stage;
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -1,15 +1,14 @@
 #pragma once
-// The options of one meshing run as a user gives them: `tubemesh mesh`'s flags and the Python
-// module's keywords. One struct, one validation, one translation into MeshOptions, so the two
-// front ends take the same values with the same defaults and refuse the same ones with the
-// same message. Defaults are MeshOptions' own (engine/pipeline/pipeline.hpp documents each);
-// an empty optional is "automatic".
+// The meshing options of one run, as job_settings (job/job_settings.hpp) makes them from the
+// option table's values (job/option_table.hpp) for every front end: one struct, one validation,
+// one translation into MeshOptions. Defaults are MeshOptions' own (engine/pipeline/pipeline.hpp
+// documents each); an empty optional is "automatic".
 #include <optional>
 #include <string>
 
 #include "engine/pipeline/pipeline.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // The documented defaults every field below starts from.
 const MeshOptions& default_mesh_options();
@@ -97,4 +96,4 @@ Stage stage_named(const std::string& name, Naming naming);
 // "sweep, surface, pyramids, tets"
 std::string stage_names();
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -11,7 +11,7 @@
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/inp_network.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace fs = std::filesystem;
 
@@ -156,4 +156,4 @@ void write_all(const HybridMesh& mesh, const std::vector<std::string>& meshes, c
     group.commit();
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -10,7 +10,7 @@
 #include "engine/pipeline/pipeline.hpp"
 #include "job/mesh_settings.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // ".MSH" -> ".msh"
 std::string lower_extension(const std::string& path);
@@ -59,4 +59,4 @@ void write_text(const std::string& path, const std::string& text);
 void write_all(const HybridMesh& mesh, const std::vector<std::string>& meshes, const WriteOptions& options,
                const std::vector<std::pair<std::string, std::string>>& texts);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

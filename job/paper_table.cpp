@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -67,4 +67,4 @@ nlohmann::json paper_table_json(const PaperExample& p, const std::vector<PaperRo
     return {{"example", p.number}, {"preset", p.name}, {"rows", list}};
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

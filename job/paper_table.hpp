@@ -11,7 +11,7 @@
 
 #include "engine/quality/quality.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // One example's column of the paper's Table 1 (and its all-tet reference mesher's count).
 struct PaperExample {
@@ -43,4 +43,4 @@ std::string format_paper_table(const PaperExample& paper, const std::vector<Pape
 // {"example": N, "preset": name, "rows": [{"key", "label", "paper", "this_mesh"}]}
 nlohmann::json paper_table_json(const PaperExample& paper, const std::vector<PaperRow>& rows);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

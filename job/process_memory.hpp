@@ -4,7 +4,7 @@
 // an mmapped block), so the temporaries of one phase stay resident under the next phase's:
 // the resident peak of a run then counts them twice. Fixing the threshold at 1 MiB makes every
 // large block its own mapping, returned to the system when freed.
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // For a program's main, before any work: the whole process is affected.
 void return_large_blocks_when_freed();
@@ -14,4 +14,4 @@ void return_large_blocks_when_freed();
 // that the next phase's peak does not stand on them. A few milliseconds.
 void return_free_memory();
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

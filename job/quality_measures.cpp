@@ -1,6 +1,6 @@
 #include "job/quality_measures.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -29,4 +29,4 @@ const QualityMeasure& primary_measure(CellKind kind) {
     throw Error("no quality measure for a cell kind");
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

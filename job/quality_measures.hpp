@@ -7,7 +7,7 @@
 
 #include "engine/quality/quality.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 struct QualityMeasure {
     CellKind kind;
@@ -28,4 +28,4 @@ std::span<const QualityMeasure> quality_measures();
 // picks the worst elements. Every kind has one.
 const QualityMeasure& primary_measure(CellKind kind);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

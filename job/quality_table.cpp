@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 namespace {
 
@@ -92,4 +92,4 @@ nlohmann::json quality_json(const QualitySummary& q) {
             {"hex_verdict_scaled_jacobian", measure_json(q.hex_verdict_jacobian)}};
 }
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -8,7 +8,7 @@
 
 #include "engine/quality/quality.hpp"
 
-namespace tubemesh::run {
+namespace tubemesh::job {
 
 // The time of the phase that made each kind (tets: "tets", pyramids: "pyramids", hexes:
 // "sweep"); negative when that phase did not run.
@@ -37,4 +37,4 @@ std::string format_quality_table(const QualitySummary& q, index_t nodes);
 std::string format_run_table(const QualitySummary& q, index_t nodes, const KindTimes& times, double total_seconds);
 nlohmann::json quality_json(const QualitySummary& q);
 
-}  // namespace tubemesh::run
+}  // namespace tubemesh::job

@@ -7,7 +7,11 @@
 #include <vector>
 
 #include "engine/io/mesh_io.hpp"
+#include "job/assembly_report.hpp"
 #include "job/html_report.hpp"
+#include "job/job_settings.hpp"
+#include "job/option_table.hpp"
+#include "python/option_keywords.hpp"
 #include "job/mesh_report.hpp"
 #include "job/outputs.hpp"
 #include "job/quality_measures.hpp"
@@ -30,6 +34,13 @@ py::array view(const std::vector<T>& data, py::ssize_t columns, const py::object
 }
 
 MeshResult& result_of(const py::object& self) { return self.cast<MeshResult&>(); }
+
+// The report as `tubemesh mesh --report` writes it, without the list of files.
+nlohmann::json report_json(const MeshResult& r) {
+    nlohmann::json report = job::run_json(r.run, {});
+    if (r.assembly) report["assembly"] = job::assembly_json(*r.assembly, r.run);
+    return report;
+}
 const HybridMesh& mesh_of(const py::object& self) { return result_of(self).run.result.mesh; }
 
 py::object cells(const py::object& self, CellKind kind) {
@@ -62,7 +73,7 @@ py::object quality(const py::object& self) {
     MeshResult& r = result_of(self);
     if (!r.quality) {
         py::dict out;
-        for (const run::QualityMeasure& m : run::quality_measures()) {
+        for (const job::QualityMeasure& m : job::quality_measures()) {
             std::vector<double> values;
             {
                 py::gil_scoped_release release;
@@ -78,7 +89,7 @@ py::object quality(const py::object& self) {
 
 py::object report(const py::object& self) {
     MeshResult& r = result_of(self);
-    if (!r.report) r.report = py::module_::import("json").attr("loads")(run::run_json(r.run, {}).dump());
+    if (!r.report) r.report = py::module_::import("json").attr("loads")(report_json(r).dump());
     return r.report;
 }
 
@@ -109,31 +120,39 @@ py::object groups(const py::object& self) {
     return out;
 }
 
-void write(const py::object& self, const py::object& path, bool msh_ascii, const std::string& inp_family,
-           const std::string& inp_pyramid, bool pipe_network, std::optional<double> film_coefficient,
-           const std::vector<int>& reverse_flow) {
+// The write options of mesh() unless given here (None: mesh()'s).
+void write(const py::object& self, const py::object& path, const py::kwargs& keywords) {
     const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
     const MeshResult& r = result_of(self);
-    run::check_mesh_output(p, r.run.result.reached);
-    WriteOptions options = run::write_options(msh_ascii, inp_family, inp_pyramid, run::Naming::Keywords);
+    job::check_mesh_output(p, r.run.result.reached);
+    nlohmann::json given = r.given;
+    const nlohmann::json here = given_options(keywords);
+    for (const auto& [key, value] : here.items()) {
+        const job::OptionSpec* spec = job::find_option(key);
+        if (!spec->help.starts_with("With pipe_network") && key != "msh_ascii" && key != "inp_family" &&
+            key != "inp_pyramid" && key != "pipe_network")
+            throw Error("write() takes the write options msh_ascii, inp_family, inp_pyramid, pipe_network, "
+                        "film_coefficient and reverse_flow, got " + key);
+        given[key] = value;
+    }
+    const job::JobSettings settings = job::job_settings(given, job::Naming::Keywords);
     std::vector<std::string> files{p};
-    options.pipe_network =
-        run::pipe_network_options(pipe_network, film_coefficient, reverse_flow, files, run::Naming::Keywords);
+    WriteOptions options = job::job_write_options(settings, files, job::Naming::Keywords);
     options.description = &r.run.result.description;
     py::gil_scoped_release release;
     write_mesh(r.run.result.mesh, p, options);
 }
 
 void write_text(const py::object& self, const py::object& path, const char* extension, const char* what,
-                std::string (*text)(const geom::MeshRun&)) {
+                std::string (*text)(const MeshResult&)) {
     const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
-    run::check_report_output(p, extension, what);
+    job::check_report_output(p, extension, what);
     const MeshResult& r = result_of(self);
     py::gil_scoped_release release;
-    run::write_text(p, text(r.run));
+    job::write_text(p, text(r));
 }
 
-std::string report_text(const geom::MeshRun& run) { return run::run_json(run, {}).dump(2) + "\n"; }
+
 
 }  // namespace
 
@@ -172,24 +191,21 @@ nodes (n x 3 float64) is a copy of x, y, z (the store keeps them apart), made on
                                "quality keys")
         .def_property_readonly("report", &report,
                                "The run's report as a dict: what `tubemesh mesh --report` writes as JSON")
-        .def("write", &write, py::arg("path"), py::kw_only(), py::arg("msh_ascii") = false,
-             py::arg("inp_family") = run::kInpFamilies[0], py::arg("inp_pyramid") = run::kInpPyramids[0],
-             py::arg("pipe_network") = false, py::arg("film_coefficient") = py::none(),
-             py::arg("reverse_flow") = std::vector<int>{},
-             "Writes the mesh; the format by extension: .msh (Gmsh 4.1, binary unless msh_ascii), .vtu, .vtm, .inp "
-             "(inp_family 'stress', 'heat', 'coupled' (CalculiX: C3D4/C3D8) or 'coupled-abaqus' (C3D4T/C3D8T, "
-             "Abaqus only); inp_pyramid 'hex' or 'c3d5' (Abaqus only); pipe_network: the water of every pipe as a "
-             "CalculiX network, with film_coefficient (default 2000) and the pipes of reverse_flow entering at "
-             "their second end, films in X.films.inp), as `tubemesh mesh -o` does. Written to a temporary name "
-             "and renamed.")
+        .def("write", &write, py::arg("path"),
+             "write(path, *, msh_ascii, inp_family, inp_pyramid, pipe_network, film_coefficient, reverse_flow): "
+             "writes the mesh; the format by extension: .msh (Gmsh 4.1, binary unless msh_ascii), .vtu, .vtm, .inp. "
+             "The write options are tubemesh.mesh()'s (see its help), by default the ones given to it. Written to "
+             "a temporary name and renamed.")
         .def(
             "write_report", [](py::object self, py::object path) {
-                write_text(self, path, ".json", "the report", report_text);
+                write_text(self, path, ".json", "the report",
+                           [](const MeshResult& r) { return report_json(r).dump(2) + "\n"; });
             },
             py::arg("path"), "Writes the report as JSON (as `tubemesh mesh --report`)")
         .def(
             "write_html", [](py::object self, py::object path) {
-                write_text(self, path, ".html", "the HTML report", run::html_report);
+                write_text(self, path, ".html", "the HTML report",
+                           [](const MeshResult& r) { return job::html_report(r.run); });
             },
             py::arg("path"), "Writes the report as one self-contained HTML page (as `tubemesh mesh --html`)")
         .def("__repr__", [](py::object self) {

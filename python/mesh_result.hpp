@@ -8,12 +8,18 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "geom/assembly/mesh_assembly.hpp"
 #include "geom/mesh_file.hpp"
 
 namespace tubemesh::python {
 
 struct MeshResult {
     geom::MeshRun run;
+    std::optional<geom::AssemblyRun> assembly;  // mesh(assembly=True): per solid, for the report
+    nlohmann::json given;                       // the options mesh() was given: write()'s defaults
     pybind11::object nodes, quality, report, groups;  // made on first use
 };
 

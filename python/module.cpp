@@ -1,6 +1,6 @@
 // The Python module `tubemesh`: mesh(), check(), make_block(), presets() and the Mesh result
-// (mesh_result.hpp). Options, defaults, messages and reports are the CLI's own
-// (job/), so `tubemesh.mesh(...)` and `tubemesh mesh ...` take the same values and
+// (mesh_result.hpp). Options (job/option_table.hpp, python/option_keywords.hpp), defaults,
+// messages, the job and its reports are the CLI's own (job/), so `tubemesh.mesh(...)` and `tubemesh mesh ...` take the same values and
 // refuse the same ones. Errors raise tubemesh.Error (a RuntimeError) with the CLI's one-line
 // message; the GIL is released while meshing and checking; Ctrl-C stops a run (interrupt.hpp).
 #include <pybind11/pybind11.h>
@@ -19,7 +19,9 @@
 #include "python/interrupt.hpp"
 #include "python/mesh_result.hpp"
 #include "job/check_report.hpp"
-#include "job/mesh_settings.hpp"
+#include "job/job_settings.hpp"
+#include "job/mesh_job.hpp"
+#include "python/option_keywords.hpp"
 
 namespace py = pybind11;
 
@@ -37,48 +39,26 @@ bool is_preset(const std::string& name) {
 
 py::object json_object(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
 
-std::unique_ptr<MeshResult> mesh(const py::object& source, bool economy, std::optional<double> size,
-                                 std::optional<double> sweep_size, std::optional<int> circ, std::optional<int> layers,
-                                 std::optional<double> axial_aspect, std::optional<double> chordal, double pyramid_height,
-                                 double gradation, std::optional<int> threads, int tet_parts, int tet_relax,
-                                 bool move_apexes, bool slide_surface, bool local_ring, std::optional<double> max_elements,
-                                 std::optional<int> solid,
-                                 const std::string& until,
-                                 const py::object& progress) {
-    run::MeshSettings s;
-    s.size = size;
-    s.sweep_size = sweep_size;
-    s.circumferential = circ;
-    if (layers) s.layers = *layers;
-    if (axial_aspect) s.axial_aspect = *axial_aspect;
-    if (chordal) s.chordal = *chordal;
-    s.chordal_given = chordal.has_value();
-    if (economy) run::apply_economy(s, {layers.has_value(), axial_aspect.has_value(), chordal.has_value()});
-    s.pyramid_height = pyramid_height;
-    s.gradation = gradation;
-    s.threads = threads;
-    s.tet_parts = tet_parts;
-    s.tet_relax = tet_relax;
-    s.move_apexes = move_apexes;
-    s.slide_surface = slide_surface;
-    s.local_ring = local_ring;
-    s.max_elements = max_elements;
-    s.solid = solid;
-    s.until = run::stage_named(until, run::Naming::Keywords);
-    MeshOptions options = run::mesh_options(s, run::Naming::Keywords);
+std::unique_ptr<MeshResult> mesh(const py::object& source, const py::dict& keywords, const py::object& progress) {
+    auto result = std::make_unique<MeshResult>();
+    result->given = given_options(keywords);
+    const job::JobSettings settings = job::job_settings(result->given, job::Naming::Keywords);
     const std::string name = path_text(source);
-    const bool preset = is_preset(name) && !std::filesystem::exists(name);
+    job::JobSource from;
+    if (is_preset(name) && !std::filesystem::exists(name) && !settings.assembly)
+        from.preset = name;
+    else
+        from.cad = name;
 
     InterruptListener listener(progress);
-    options.progress = listener.callback();
-    auto result = std::make_unique<MeshResult>();
     bool interrupted = false;
     {
         py::gil_scoped_release release;
         try {
-            result->run = preset ? geom::mesh_preset(name, options, s.until)
-                                 : geom::mesh_file(name, options,
-                                                   {.solid = s.solid.value_or(0), .until = s.until, .keyword_names = true});
+            job::JobResult job =
+                job::run_mesh_job(from, settings, {.progress = listener.callback(), .naming = job::Naming::Keywords});
+            result->run = std::move(job.run);
+            result->assembly = std::move(job.assembly);
         } catch (const Interrupted&) {
             interrupted = true;
         }
@@ -93,7 +73,7 @@ py::object check(const py::object& path) {
     {
         py::gil_scoped_release release;
         const HybridMesh mesh = read_msh(p);
-        report = run::check_json(mesh, check_mesh(mesh), summarize_quality(mesh));
+        report = job::check_json(mesh, check_mesh(mesh), summarize_quality(mesh));
     }
     return json_object(report);
 }
@@ -133,30 +113,15 @@ PYBIND11_MODULE(tubemesh, m) {
     py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
     tp::bind_mesh_result(m);
 
-    const run::MeshSettings d;  // the CLI's defaults
-    m.def("mesh", &tp::mesh, py::arg("source") = "paper-ex1", py::kw_only(), py::arg("economy") = false,
-          py::arg("size") = py::none(), py::arg("sweep_size") = py::none(), py::arg("circ") = py::none(),
-          py::arg("layers") = py::none(), py::arg("axial_aspect") = py::none(), py::arg("chordal") = py::none(),
-          py::arg("pyramid_height") = d.pyramid_height,
-          py::arg("gradation") = d.gradation, py::arg("threads") = py::none(), py::arg("tet_parts") = d.tet_parts,
-          py::arg("tet_relax") = d.tet_relax, py::arg("move_apexes") = d.move_apexes,
-          py::arg("slide_surface") = d.slide_surface, py::arg("local_ring") = d.local_ring,
-          py::arg("max_elements") = py::none(), py::arg("solid") = py::none(),
-          py::arg("until") = std::string(stage_name(d.until)), py::arg("progress") = py::none(),
-          R"doc(Meshes a CAD file (.step .stp .iges .igs .brep) or a built-in block (a preset name, see presets()).
-
-The options and defaults are `tubemesh mesh`'s (README, "Command line"); None is automatic:
-size (S: bounding-box diagonal / 25, at least 1.3 St), sweep_size (St: the smallest tube
-diameter, cut by the paper's rules), circ (n: the multiple of 4 nearest 2 pi (r + St/2) / St, at
-least 8), layers (2), axial_aspect (1.5), chordal (0.008125), threads (all cores), max_elements
-(what the memory this process may use holds; the real counts are capped too), solid (the file's only solid); slide_surface=False is
---fixed-surface; local_ring=False is --global-ring. economy=True is --economy: the
-paper's ring (circ 4, layers 2, axial_aspect 2, chordal 0.02, St a share of S) where those are None. until: the last stage ('sweep', 'surface', 'pyramids', 'tets'). progress: a callable
-(phase, done, total), called with the GIL from the meshing threads.
-
-Returns a tubemesh.Mesh. Raises tubemesh.Error with the CLI's one-line message; the GIL is
-released while meshing; Ctrl-C (KeyboardInterrupt) stops the run within a phase's next progress
-step.)doc");
+    tp::define_with_options(
+        m, "mesh",
+        py::cpp_function(&tp::mesh, py::arg("source"), py::arg("options"), py::arg("progress")), "paper-ex1",
+        "Meshes a CAD file (.step .stp .iges .igs .brep) or a built-in block (a preset name, see presets()).\n\n"
+        "The options are `tubemesh mesh`'s (README, \"Options\"), with the same defaults and ranges; output, "
+        "report and html write the files (all or none) before returning.",
+        "progress: a callable (phase, done, total), called with the GIL from the meshing threads.\n\n"
+        "Returns a tubemesh.Mesh. Raises tubemesh.Error with the CLI's one-line message; the GIL is released "
+        "while meshing; Ctrl-C (KeyboardInterrupt) stops the run within a phase's next progress step.");
     m.def("check", &tp::check, py::arg("path"),
           "Checks a Gmsh .msh file (as `tubemesh check --json`): counts, validity, conformity, volume, groups, "
           "quality. Returns the report as a dict; raises tubemesh.Error when the file cannot be read.");

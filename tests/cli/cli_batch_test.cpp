@@ -50,7 +50,8 @@ TEST(BatchStatusCsv, KindsWithoutCellsHaveBlankMeasures) {
     EXPECT_EQ(plain["pyramids"], "0");
     EXPECT_EQ(plain["tet_collapse_min"], "0.25");
     EXPECT_EQ(plain["tet_collapse_mean"], "0.75");
-    for (const char* blank : {"pyramid_jacobian_min", "pyramid_jacobian_mean", "hex_jm_min", "hex_jm_mean", "hex_cond_max"}) {
+    for (const char* blank : {"pyramid_scaled_jacobian_min", "pyramid_scaled_jacobian_mean", "hex_scaled_jacobian_min",
+                              "hex_scaled_jacobian_mean", "hex_condition_max"}) {
         EXPECT_EQ(plain.count(blank), 1u) << blank;
         EXPECT_EQ(plain[blank], "") << blank;
         EXPECT_EQ(later[blank], "") << blank;
@@ -391,7 +392,7 @@ TEST(CliBatch, AWrongManifestOrCommandLineExitsTwoWithOneLine) {
         {with([](json& m) { m["blocks"][0]["options"] = {{"pipe_network", true}, {"formats", {"msh"}}}; }),
          "pipe_network writes the water into a .inp"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"reverse_flow", {"a"}}}; }),
-         "\"reverse_flow\" takes whole pipe numbers"},
+         "\"reverse_flow\" takes whole numbers"},
         {with([](json& m) { m["blocks"][0]["options"] = {{"local_ring", 0}}; }), "\"local_ring\" must be true or false"},
         {with([](json& m) { m["blocks"][0]["id"] = "../x"; }), "letters, digits"},
         {with([](json& m) { m.erase("tubemesh_batch"); }), "not a tubemesh batch manifest"},

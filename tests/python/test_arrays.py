@@ -144,7 +144,7 @@ def test_moved_apexes_keep_the_rings_and_the_pyramid_bases():
 
 
 def test_slid_surface_nodes_keep_the_solid_and_its_rings():
-    fixed = tubemesh.mesh("paper-ex3", threads=1, slide_surface=False)
+    fixed = tubemesh.mesh("paper-ex3", threads=1, fixed_surface=True)
     slid = tubemesh.mesh("paper-ex3", threads=1)
     assert np.array_equal(fixed.hexes, slid.hexes) and np.array_equal(fixed.pyramids, slid.pyramids)
     held = np.unique(np.concatenate([fixed.hexes.ravel(), fixed.pyramids.ravel()]))
@@ -175,7 +175,7 @@ def test_local_ring_thins_the_ring_only_near_the_face(tmp_path):
     step = tmp_path / "pipe.step"
     tubemesh.make_block(step, spec=spec)
     local = tubemesh.mesh(step, threads=1, until="sweep")
-    paper = tubemesh.mesh(step, threads=1, until="sweep", local_ring=False)
+    paper = tubemesh.mesh(step, threads=1, until="sweep", global_ring=True)
     assert local.report["sizes"]["St"] > paper.report["sizes"]["St"]
     assert any("thinned locally" in line for line in local.report["model"])
     assert not any("thinned locally" in line for line in paper.report["model"])

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "batch/batch_command.hpp"
+#include "batch/block_options.hpp"
 #include "batch/catalogue.hpp"
 #include "batch/plan.hpp"
 #include "batch/run_lock.hpp"
@@ -38,6 +39,7 @@ struct BatchArgs {
     std::string html;
     int threads = 0;
     bool csv = false;
+    bool schema = false;
 };
 
 std::vector<batch::BlockRecord> rows_of(const fs::path& outdir) {
@@ -54,9 +56,9 @@ std::vector<batch::BlockRecord> rows_of(const fs::path& outdir) {
 }
 
 int show_status(const BatchArgs& a) {
-    if (!a.html.empty()) run::check_report_output(a.html, ".html", "the HTML report");
+    if (!a.html.empty()) job::check_report_output(a.html, ".html", "the HTML report");
     const std::vector<batch::BlockRecord> rows = rows_of(a.status_dir);
-    if (!a.html.empty()) run::write_text(a.html, batch::status_html(rows));
+    if (!a.html.empty()) job::write_text(a.html, batch::status_html(rows));
     fmt::print("{}", a.csv ? batch::status_csv(rows) : batch::status_text(rows));
     for (const batch::BlockRecord& r : rows)
         if (r.status != "done") return 1;
@@ -126,6 +128,9 @@ Command add_batch_command(CLI::App& app) {
         ->option_text("FILE.html");
     cmd->add_option("--merge", args->merge_dir, "Join the shard catalogues in OUTDIR into its catalogue.sqlite")
         ->option_text("OUTDIR");
+    cmd->add_flag("--schema", args->schema,
+                  "Print the options a manifest's blocks and defaults take (JSON: default, help, units, range, "
+                  "choices, older names) and exit");
     cmd->add_flag("--verbose", args->command.verbose, "A line per block as it ends");
     cmd->add_flag("--quiet", args->command.quiet, "Print nothing but errors");
     cmd->footer(
@@ -133,6 +138,10 @@ Command add_batch_command(CLI::App& app) {
         "Exit status: 0 every block done, 1 some failed (see --status), 2 the manifest or the command line is wrong.");
 
     return {cmd, [args]() -> int {
+        if (args->schema) {
+            fmt::print("{}\n", batch::manifest_schema().dump(2));
+            return 0;
+        }
         if (!args->status_dir.empty()) return show_status(*args);
         if (args->csv) throw Error("--csv goes with --status OUTDIR");
         if (!args->html.empty()) throw Error("--html goes with --status OUTDIR");

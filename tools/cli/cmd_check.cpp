@@ -30,7 +30,7 @@ void print_text(const std::string& path, const HybridMesh& mesh, const CheckRepo
         fmt::print("valid and conforming\n\n");
     else
         fmt::print("NOT valid or not conforming:\n{}\n", describe(report));
-    fmt::print("{}", run::format_quality_table(q, mesh.point_count()));
+    fmt::print("{}", job::format_quality_table(q, mesh.point_count()));
 }
 
 }  // namespace
@@ -46,7 +46,7 @@ Command add_check_command(CLI::App& app) {
         const CheckReport report = check_mesh(mesh);
         const QualitySummary quality = summarize_quality(mesh);
         if (args->json)
-            fmt::print("{}\n", run::check_json(mesh, report, quality).dump(2));
+            fmt::print("{}\n", job::check_json(mesh, report, quality).dump(2));
         else
             print_text(args->path, mesh, report, quality);
         return report.ok() ? 0 : 1;

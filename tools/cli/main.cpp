@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     // Ctrl-C, kill or timeout: remove this run's temporaries. A file-size limit (ulimit -f):
     // let the write fail with an error that names the file instead of killing the process.
     tubemesh::io::remove_temporaries_on_signals();
-    tubemesh::run::return_large_blocks_when_freed();
+    tubemesh::job::return_large_blocks_when_freed();
     signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"tubemesh: conforming hex/pyramid/tet meshes for solids with tubular holes"};
     app.require_subcommand(0, 1);

@@ -59,7 +59,7 @@ int run_root(int argc, char** argv, int ranks, int node_share, const batch::Work
 }  // namespace
 
 int main(int argc, char** argv) {
-    tubemesh::run::return_large_blocks_when_freed();
+    tubemesh::job::return_large_blocks_when_freed();
     // A block's worker process: this program again, without MPI.
     if (argc == 2 && std::string(argv[1]) == "batch-worker") return batch::worker_main();
 

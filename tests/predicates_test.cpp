@@ -359,6 +359,29 @@ TEST(Predicates, InsphereMatchesExactArithmetic) {
     EXPECT_GT(total.naive_wrong, 50000);
 }
 
+// The second filter stage (from the monomials' permanent) on the cases the first one leaves: it
+// never contradicts exact arithmetic, and it decides some of the near-ties of points a few ulps
+// off a sphere (those of a front's rings) that would otherwise need exact arithmetic.
+TEST(Predicates, InspherePermanentStageIsExactWhereItDecides) {
+    Random r(78);
+    test::Reference ref;
+    int left = 0, decided = 0, wrong = 0;
+    for (int i = 0; i < 400000; ++i) {
+        const int kind = i % 8;
+        const Quint q = insphere_case(r, kind);
+        const double* p[5] = {q[0].data(), q[1].data(), q[2].data(), q[3].data(), q[4].data()};
+        if (detail::insphere_filter(p[0], p[1], p[2], p[3], p[4]) != 0) continue;
+        ++left;
+        const int s = detail::insphere_filter_permanent(p[0], p[1], p[2], p[3], p[4]);
+        if (s == 0) continue;
+        ++decided;
+        wrong += s != ref.insphere(p[0], p[1], p[2], p[3], p[4]);
+    }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(left, 10000);
+    EXPECT_GT(decided, left / 20) << decided << " of " << left;
+}
+
 TEST(Predicates, Orient2dMatchesExactArithmetic) {
     Random r(5);
     test::Reference ref;

@@ -117,6 +117,7 @@ TEST(Relaxation, KeepsTheDomainAndRaisesTheMean) {
     std::printf("relaxation: %llu moves, %u second walks, %u dropped, mean collapse %.4f -> %.4f, %.3f s\n",
                 (unsigned long long)s.moves, s.second_walks, s.dropped, before, after, s.seconds);
     EXPECT_EQ(s.iterations, 2);
+    EXPECT_EQ(s.reinsertions, 1) << "the tets are built again after the last iteration only";
     // A move counts only when the point leaves its place.
     EXPECT_GT(s.moves, points_before - fixed) << "most points move in each iteration";
     expect_valid(r.domain, r.domain.front);
@@ -126,6 +127,21 @@ TEST(Relaxation, KeepsTheDomainAndRaisesTheMean) {
     EXPECT_TRUE(std::equal(fixed_xyz.begin(), fixed_xyz.end(), r.domain.xyz.begin())) << "a fixed point moved";
     // The Delaunay tets of the relaxed points, before any optimisation (measured 0.592 -> 0.632).
     EXPECT_GT(after, before + 0.015);
+}
+
+// Inserting again after every iteration (the option) still keeps the domain; the default
+// inserts once, after the last iteration.
+TEST(Relaxation, InsertsAgainAfterEveryIterationWhenAsked) {
+    Refined r = refined_cube();
+    const double volume = domain_volume(r.domain);
+    const double before = mean_collapse(r.domain);
+    RelaxationOptions o;
+    o.reinsert_each_iteration = true;
+    const RelaxationStats s = relax_points(r.domain, r.recovered, r.sizes, Parallelism{2, 2}, o);
+    EXPECT_EQ(s.reinsertions, 2);
+    expect_valid(r.domain, r.domain.front);
+    EXPECT_NEAR(domain_volume(r.domain), volume, 1e-9 * volume);
+    EXPECT_GT(mean_collapse(r.domain), before + 0.015);
 }
 
 TEST(Relaxation, SameMeshForOneAndTwoThreads) {

@@ -122,4 +122,48 @@ inline int insphere_filter(const double* a, const double* b, const double* c, co
     return decided_sign(det, bound);
 }
 
+
+// A second, tighter stage of insphere_filter for the cases it leaves: the same determinant with
+// the bound from its monomials' absolute values (the permanent P) instead of 72 m^2 mx my mz.
+// Error <= gamma_16 P_exact <= 16u (1 + 50u) P for the computed P (it rounds down by at most
+// 25u relative); kInspherePermanentBound = 17u leaves u P of spare, which absorbs the absolute
+// error of subnormal intermediates as long as the bound is at least 2^-250: inside the window
+// every difference is below 2^200, so each such error (at most 2^-1075) grows to at most 2^-470.
+inline constexpr double kInspherePermanentBound = 17.0 * 0x1p-53;
+inline constexpr double kInspherePermanentMin = 0x1p-250;
+inline int insphere_filter_permanent(const double* a, const double* b, const double* c, const double* d,
+                                     const double* e) {
+    const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
+    const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
+    const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
+    const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
+    const double mx = std::max(abs_max3(ax, bx, cx), std::fabs(dx));
+    const double my = std::max(abs_max3(ay, by, cy), std::fabs(dy));
+    const double mz = std::max(abs_max3(az, bz, cz), std::fabs(dz));
+    if (!(min3(mx, my, mz) >= kInsphereMin && max3(mx, my, mz) <= kInsphereMax)) return 0;
+    const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
+    const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
+    const double bcd = (bz * cd - cz * bd) + dz * bc;
+    const double acd = (az * cd - cz * ad) + dz * ac;
+    const double abd = (az * bd - bz * ad) + dz * ab;
+    const double abc = (az * bc - bz * ac) + cz * ab;
+    const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
+    const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
+    const double det = (la * bcd - lb * acd) + (lc * abd - ld * abc);
+    // The 2x2 minors' permanents, then the 3x3 ones, each with absolute values.
+    const auto p2 = [](double x0, double y1, double x1, double y0) {
+        return std::fabs(x0 * y1) + std::fabs(x1 * y0);
+    };
+    const double pab = p2(ax, by, bx, ay), pac = p2(ax, cy, cx, ay), pad = p2(ax, dy, dx, ay);
+    const double pbc = p2(bx, cy, cx, by), pbd = p2(bx, dy, dx, by), pcd = p2(cx, dy, dx, cy);
+    const double pbcd = (std::fabs(bz) * pcd + std::fabs(cz) * pbd) + std::fabs(dz) * pbc;
+    const double pacd = (std::fabs(az) * pcd + std::fabs(cz) * pad) + std::fabs(dz) * pac;
+    const double pabd = (std::fabs(az) * pbd + std::fabs(bz) * pad) + std::fabs(dz) * pab;
+    const double pabc = (std::fabs(az) * pbc + std::fabs(bz) * pac) + std::fabs(cz) * pab;
+    const double permanent = (la * pbcd + lb * pacd) + (lc * pabd + ld * pabc);
+    const double bound = kInspherePermanentBound * permanent;
+    if (!(bound >= kInspherePermanentMin)) return 0;
+    return decided_sign(det, bound);
+}
+
 }  // namespace tubemesh::predicates::detail

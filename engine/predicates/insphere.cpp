@@ -88,6 +88,9 @@ std::optional<int> insphere_bigint(const ScaledInput& in) {
 }  // namespace
 
 int insphere_exact(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    // Near-ties among a structured front's points often pass the tighter bound: exact
+    // arithmetic only for the rest.
+    if (const int s = insphere_filter_permanent(a, b, c, d, e)) return s;
     const double* rows[4] = {a, b, c, d};
     const Differences<4, 3> diff(rows, e, kXYZ);
     if (!diff.finite) return 0;

@@ -385,36 +385,46 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     }
     std::vector<index_t> kept;
     if (!n) return kept;
-    // The trees are independent and each build is serial: build them side by side.
     GrowingPoints::Impl& points = *existing.impl_;
-    std::optional<PointIndex> cands;
-    points.prepare([&] { cands.emplace(cx, cy, cz); });
+    points.prepare([] {});
     // Far enough from existing points: independent per candidate, parallel.
     std::vector<std::uint8_t> free_of_points(n, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i < r.end(); ++i)
             free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h) ? 1 : 0;
     });
-    // Among candidates: greedy in order, so earlier ones win whatever the thread count. The
-    // queries are independent (each candidate's earlier neighbours that passed the first test),
-    // so they run in parallel; only the greedy pass over those short lists is serial.
-    std::vector<std::vector<index_t>> earlier(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    // Among candidates: greedy in order, so earlier ones win whatever the thread count. Only the
+    // candidates that passed the first test can take a place or block a later one, so the tree
+    // holds those alone (after the first rounds most candidates fall at the first test). The
+    // queries are independent, so they run in parallel; only the greedy pass is serial.
+    std::vector<index_t> free;
+    for (std::size_t i = 0; i < n; ++i)
+        if (free_of_points[i]) free.push_back(static_cast<index_t>(i));
+    if (free.empty()) return kept;
+    std::vector<double> fx(free.size()), fy(free.size()), fz(free.size());
+    for (std::size_t k = 0; k < free.size(); ++k) {
+        fx[k] = cx[free[k]];
+        fy[k] = cy[free[k]];
+        fz[k] = cz[free[k]];
+    }
+    const PointIndex cands(fx, fy, fz);
+    // earlier[k]: the positions in `free` of the free candidates before free[k] within its radius.
+    std::vector<std::vector<index_t>> earlier(free.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, free.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
         // Only whether an earlier neighbour is taken matters, not their order: no sort.
         std::vector<std::pair<index_t, double>> near;
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-            if (!free_of_points[i]) continue;
-            cands->within_unordered({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+            const index_t i = free[k];
+            cands.within_unordered({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
             for (const auto& hit : near)
-                if (hit.first < i && free_of_points[hit.first]) earlier[i].push_back(hit.first);
+                if (hit.first < k) earlier[k].push_back(hit.first);
         }
     });
-    std::vector<std::uint8_t> taken(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!free_of_points[i]) continue;
-        if (std::any_of(earlier[i].begin(), earlier[i].end(), [&](index_t j) { return taken[j] != 0; })) continue;
-        taken[i] = 1;
-        kept.push_back(static_cast<index_t>(i));
+    std::vector<std::uint8_t> taken(free.size(), 0);
+    for (std::size_t k = 0; k < free.size(); ++k) {
+        if (std::any_of(earlier[k].begin(), earlier[k].end(), [&](index_t j) { return taken[j] != 0; })) continue;
+        taken[k] = 1;
+        kept.push_back(free[k]);
     }
     return kept;
 }

@@ -50,10 +50,11 @@ bool move_point(const TetDomain& dom, index_t p, std::span<const index_t> star, 
 }
 
 // One sweep of moves over the free points (ids >= fixed), all at once from the old positions
-// (Jacobi, as in Chen and Holst): each point stays inside its old star, so inside the region,
-// whatever its neighbours do, and the tets are built again afterwards, so the old ones need not
-// stay positive. As good as moving colour by colour (Gauss-Seidel), faster and with no
-// colouring (bench/results/tuning-notes.md).
+// (Jacobi, as in Chen and Holst): each point stays inside its star as the sweep finds it, and
+// the tets are built again after the last sweep, so they need not stay positive in between (a
+// later sweep moves a point only where its whole star is positive again). As good as moving
+// colour by colour (Gauss-Seidel), faster and with no colouring (bench/results/tuning-notes.md).
+// A point that still ended outside the region would be refused by the reinsertion's walk.
 std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes) {
     const Incidence inc = build_incidence(dom);
     const index_t n = dom.point_count();
@@ -158,7 +159,9 @@ RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, 
         beat(pulse);
         stats.moves += move_points(domain, fixed, sizes);
         beat(pulse);
+        if (!options.reinsert_each_iteration && it + 1 < options.iterations) continue;
         stats.second_walks += reinsert(domain, recovered, par.parts, pulse);
+        ++stats.reinsertions;
     }
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither
     // moves nor is inserted again); remove them all.

@@ -8,9 +8,10 @@
 // free point to its star's size-weighted ODT position (the mean of the star's circumcentres,
 // each tet weighted by its volume / h^3, h the mean target size at its corners: Chen and Holst's
 // optimal Delaunay triangulation with the point density of the size field, as in Alliez et al.
-// 2005), kept only as far as no tet of its star inverts (its neighbours where they were), and
-// then inserts all free points again into the recovered front mesh: the tets become the
-// constrained Delaunay tets of the moved points (figures at RelaxationOptions::iterations).
+// 2005), kept only as far as no tet of its star inverts (its neighbours where they were). After
+// the last iteration all free points are inserted again into the recovered front mesh: the tets
+// become the constrained Delaunay tets of the moved points (figures at
+// RelaxationOptions::iterations). Earlier iterations move on the stars as they are.
 //
 // Parallel and deterministic: every point's move is computed from the positions before the
 // round, and the insertion runs the Delaunay kernel with a fixed part count.
@@ -29,11 +30,16 @@ struct RelaxationOptions {
     // Move-and-reinsert rounds; 0 = none. Default 2: a third raises the mean collapse little
     // for more time (bench/results/tuning-notes.md).
     int iterations = 2;
+    // Insert the points again after every iteration instead of after the last one only. Off by
+    // default: each insertion rebuilds all the interior tets, the largest cost of the relaxation,
+    // while moving twice on the first stars loses little (bench/results/tuning-notes.md).
+    bool reinsert_each_iteration = false;
 };
 
 struct RelaxationStats {
     int iterations = 0;
     std::uint64_t moves = 0;   // point moves over all iterations
+    int reinsertions = 0;      // times the free points were inserted again
     index_t second_walks = 0;  // reinsertions whose first walk ran into the front
     index_t dropped = 0;       // points the kernel could not insert again (removed, ids compacted)
     double seconds = 0;

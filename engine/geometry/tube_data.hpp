@@ -70,8 +70,11 @@ struct TubeData {
     // is meshed with triangles that take the ring's wall nodes on that edge. Its end quads are
     // not boundary faces but fronts that get pyramids, like the outer quads.
     std::array<bool, 2> stops{};
-    // Per stopped end: the loop edge's curve parameter at each ring node (n values, node order).
+    // Per stopped end: the loop edge's curve parameter at ring nodes 0, 1, ..., n - 1 and at node
+    // 0 again at the other end of the closed edge's range (n + 1 values, increasing or decreasing),
+    // and the edge's one B-rep vertex (at ring node 0).
     std::array<std::vector<double>, 2> stop_params;
+    std::array<index_t, 2> stop_vertex{};
 };
 
 // How far a curved B-rep edge's chords may stray from it, as a fraction of each chord's own

@@ -85,6 +85,17 @@ TEST(PipelineRingStop, ARingThatStopsMeetsTetsConformingly) {
     for (index_t i = ring.first_node; i < ring.first_node + ring.stations * (ring.radial_layers + 1) * ring.circumferential; ++i)
         ahead = std::max(ahead, dot(r.mesh.point(i) - tube.stations.back().centre, tube.stations.back().tangent));
     EXPECT_NEAR(ahead, 0, 1e-9);
+
+    // The same mesh for one thread and two.
+    MeshOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const PipelineResult a = run_pipeline(prepared.pipeline_input(), one), b = run_pipeline(prepared.pipeline_input(), two);
+    EXPECT_EQ(a.mesh.x, b.mesh.x);
+    EXPECT_EQ(a.mesh.y, b.mesh.y);
+    EXPECT_EQ(a.mesh.z, b.mesh.z);
+    for (CellKind k : {CellKind::Hex, CellKind::Pyramid, CellKind::Tet})
+        EXPECT_EQ(a.mesh.block(k).nodes, b.mesh.block(k).nodes);
 }
 
 }  // namespace

@@ -112,7 +112,8 @@ MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage 
             continue;
         }
         retry.accept();
-        finish_run(run, model, prepared, options, std::move(first), retry, k);
+        // Groups and names are the meshed model's: the split one when a ring stops.
+        finish_run(run, prepared.meshed(model), prepared, options, std::move(first), retry, k);
         scale_back(run, k);
         for (const std::string& line : coverage_lines(run.coverage)) run.model_lines.push_back(line);
         return run;

@@ -98,5 +98,44 @@ TEST(PipelineRingStop, ARingThatStopsMeetsTetsConformingly) {
         EXPECT_EQ(a.mesh.block(k).nodes, b.mesh.block(k).nodes);
 }
 
+// An inclined pipe whose wall comes within 0.005 r of the bottom face near its right end: no ring
+// fits there, but one fits along the rest. prepare_model splits the wall a diameter before that
+// spot, stops the ring there, and meshes the wall beyond with tets.
+TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
+    const double r = 0.02;
+    const TopoDS_Solid solid = test::box_with_pipes(
+        gp_Pnt(0, 0, 0), gp_Pnt(1, 1, 1), {test::straight_spine(gp_Pnt(-0.5, 0.5, 0.441), gp_Pnt(1.5, 0.5, -0.119))}, r);
+    const geom::Model model = test::model_of(solid);
+    const geom::PreparedModel prepared = geom::prepare_model(model, geom::prepare_options(MeshOptions{}));
+    ASSERT_TRUE(prepared.split != nullptr);
+    EXPECT_EQ(prepared.split->face_count(), model.face_count() + 1);
+    ASSERT_EQ(prepared.tubes.tubes.size(), 1u);
+    ASSERT_TRUE(prepared.tubes.tubes[0].stop.has_value());
+    EXPECT_TRUE(prepared.dropped.empty());
+    const double share = geom::ring_share(prepared.coverage);
+    std::printf("[ figures  ] ring share %.3f\n", share);
+    EXPECT_GT(share, 0.3);
+    EXPECT_LT(share, 0.98);
+    const TubeData& tube = prepared.geometry.tubes.at(0);
+    EXPECT_TRUE(tube.stops[1]);
+
+    MeshOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const PipelineResult a = run_pipeline(prepared.pipeline_input(), one);
+    const CheckReport check = check_mesh(a.mesh);
+    EXPECT_TRUE(check.ok()) << describe(check);
+    const TubeRing& ring = a.sweep.rings.at(0);
+    EXPECT_TRUE(ring.stopped[1]);
+    EXPECT_EQ(a.sweep.stop_quads.size(), 4u * ring.radial_layers * ring.circumferential);
+    EXPECT_EQ(a.mesh.cell_count(CellKind::Pyramid), (a.sweep.outer_quads.size() + a.sweep.stop_quads.size()) / 4);
+    EXPECT_GT(a.mesh.cell_count(CellKind::Tet), 0u);
+    const PipelineResult b = run_pipeline(prepared.pipeline_input(), two);
+    EXPECT_EQ(a.mesh.x, b.mesh.x);
+    EXPECT_EQ(a.mesh.z, b.mesh.z);
+    for (CellKind k : {CellKind::Hex, CellKind::Pyramid, CellKind::Tet})
+        EXPECT_EQ(a.mesh.block(k).nodes, b.mesh.block(k).nodes);
+}
+
 }  // namespace
 }  // namespace tubemesh

@@ -38,6 +38,11 @@ struct RingDrop {
     double length = 0;       // of its centre line; 0 when not measured
     std::string reason;      // short, for the reports: "walls meet", "0.1 r from face 4", ...
     std::string warning;     // one line: the pipe, its faces, why, and what would give it a ring
+    // Too little room at a spot (a face or a pipe too near there), not along the whole pipe: its
+    // ring may stop before the spot instead (prepare.hpp).
+    bool spot = false;
+    // `faces` are ids of the model prepare_model split where a ring stops (PreparedModel::split).
+    bool on_split = false;
 };
 
 // Throws tubemesh::Error when an edge of the solid bounds more than two faces: its boundary

@@ -7,6 +7,7 @@
 // No OpenCASCADE header here.
 #include "engine/geometry/tube_data.hpp"
 #include "geom/model/model.hpp"
+#include "geom/tubes/tubes.hpp"
 
 namespace tubemesh::geom {
 
@@ -22,5 +23,25 @@ Model split_wall(const Model& model, int wall, const Vec3& centre, const Vec3& a
 // stations end on the edge's plane and ring2 holds n nodes on the edge from its vertex by arc
 // length, turning as ring1 does. Throws tubemesh::Error when `edge` is not such an edge.
 void stop_ring_at_edge(const Model& model, int edge, TubeData& tube);
+
+// The wall face of `faces` the cross-section through `centre` (on the tube's axis) cuts: the one
+// nearest `centre`.
+int wall_face_at(const Model& model, const std::vector<int>& faces, const Vec3& centre);
+
+// The closed edge two of `faces` share (no seam) whose centre lies nearest `centre`, within
+// `reach`: where split_wall cut the wall; 0 when there is none.
+int stop_edge_at(const Model& model, const std::vector<int>& faces, const Vec3& centre, double reach);
+
+// `tube`, found on a model whose wall `edge` splits, cut back to the stretch from its end nearer
+// `keep` to `edge` (TubeInfo::stop; that end becomes E1). Throws tubemesh::Error when `edge` does
+// not split the wall between its ends.
+TubeInfo stopped_tube(const Model& model, const TubeInfo& tube, int edge, const Vec3& keep);
+
+// The whole tube of a stopped one, its ring's end first: what discretize follows the wall on.
+TubeInfo whole_tube(const TubeInfo& stopped);
+
+// Per face id of `from` (element id - 1), the id of the same face in `to`; 0 where `to` has it
+// no more (a face split_wall cut).
+std::vector<int> same_faces_in(const Model& from, const Model& to);
 
 }  // namespace tubemesh::geom

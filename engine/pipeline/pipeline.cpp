@@ -42,6 +42,7 @@ constexpr double kRingJoinShare = 1e-6;
 
 // Each ring's wall nodes at its two end stations, named after the pipe's wall group. A joined
 // end is no rim; a pipe of joined rings has its two rims, the second named as the first is not.
+// A stopped end's (TubeData::stops) is "<pipe>_ring_stop".
 void add_rims(const SweepResult& sweep, const std::vector<RingJoin>& joins, const HybridMesh& mesh,
               MeshDescription& description) {
     const auto joined = [&](index_t tube, int end) {
@@ -59,6 +60,8 @@ void add_rims(const SweepResult& sweep, const std::vector<RingJoin>& joins, cons
                                    [&](const NamedNodeSet& s) { return s.name == n; });
             };
             if (named(name)) name = pipe + (e == 0 ? "_outlet" : "_inlet");
+            // Where a ring stops the pipe goes on, meshed with tets: no end of the pipe.
+            if (ring.stopped[static_cast<std::size_t>(e)]) name = pipe + "_ring_stop";
             NamedNodeSet rim{name, {}};
             const index_t station = e == 0 ? 0 : ring.stations - 1;
             for (index_t k = 0; k < ring.circumferential; ++k) rim.nodes.push_back(ring.node(station, 0, k));

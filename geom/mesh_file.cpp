@@ -86,7 +86,8 @@ void finish_run(MeshRun& run, const Model& model, const PreparedModel& prepared,
                 c.thickest = ring.thickest;
             }
         const std::string thinned = retry.ring_reason(t);
-        if (!thinned.empty()) c.reason = thinned;
+        // A ring that stops keeps saying why it stops.
+        if (!thinned.empty()) c.reason = c.length > 0 ? fmt::format("{}; {}", c.reason, thinned) : thinned;
         if (c.thinnest < c.thickest && c.reason.empty()) c.reason = "thinned locally where a face or a tube is near";
     }
 }

@@ -109,10 +109,11 @@ std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& 
     for (const RingDrop& d : dropped) w.push_back(d.warning);
     for (const TubeInfo& t : tubes.tubes)
         if (t.stop)
-            w.push_back(fmt::format("the pipe of wall faces {}: {}: its hex ring stops on a cross-section {:.3g} along it "
-                                    "({:.0f}% of its length), and its wall beyond (faces {}) is meshed with tetrahedra",
-                                    join(whole_tube(t).faces), t.stop->reason, t.length,
-                                    100 * t.length / t.stop->length, join(t.stop->beyond)));
+            w.push_back(fmt::format("the pipe of wall faces {} comes too near at one spot ({}): its hex ring stops on a "
+                                    "cross-section before it ({:.0f}% of its length), and its wall beyond (faces {}) is "
+                                    "meshed with tetrahedra; for a ring along all of it, move the pipe",
+                                    join(whole_tube(t).faces), t.stop->reason, 100 * t.length / t.stop->length,
+                                    join(t.stop->beyond)));
     for (const std::string& x : plan.warnings) w.push_back(x);
     return w;
 }
@@ -233,7 +234,7 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
         PrepareOptions o = options;
         o.drop = drops_on_split(model, *split, options.drop);
         o.stops = {{cut->centre, cut->keep, tube.radius_max,
-                    fmt::format("{} ({:.3g} along from its kept end)", drop.reason, cut->spot)}};
+                    drop.reason}};
         PreparedModel p = prepare_unguarded(*split, o);
         if (std::none_of(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }))
             return std::nullopt;
@@ -260,8 +261,7 @@ std::vector<RingCoverage> ring_coverage(const Model& model, const TubeSearch& tu
             c.wall_area /= c.share;
             c.ring_length = tube.length;
             c.length = tube.stop->length;
-            c.reason = fmt::format("ring stops at {:.3g} of {:.3g} along it, before {}", tube.length, tube.stop->length,
-                                   tube.stop->reason);
+            c.reason = fmt::format("ring stops before a spot {}", tube.stop->reason);
         } else if (!plan.changes.empty())
             c.reason = fmt::format("St cut by {}: {}", sizing_rule_name(plan.changes.back().rule), plan.changes.back().reason);
         out.push_back(std::move(c));

@@ -116,6 +116,13 @@ TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
     std::printf("[ figures  ] ring share %.3f\n", share);
     EXPECT_GT(share, 0.3);
     EXPECT_LT(share, 0.98);
+    // The coverage says where the ring stops and why.
+    ASSERT_EQ(prepared.coverage.size(), 1u);
+    const geom::RingCoverage& c = prepared.coverage[0];
+    EXPECT_GT(c.length, c.ring_length);
+    EXPECT_NEAR(c.share, c.ring_length / c.length, 1e-12);
+    EXPECT_NE(c.reason.find("ring stops before a spot"), std::string::npos) << c.reason;
+    EXPECT_EQ(c.faces.size(), 2u);
     const TubeData& tube = prepared.geometry.tubes.at(0);
     EXPECT_TRUE(tube.stops[1]);
 
@@ -130,6 +137,10 @@ TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
     EXPECT_EQ(a.sweep.stop_quads.size(), 4u * ring.radial_layers * ring.circumferential);
     EXPECT_EQ(a.mesh.cell_count(CellKind::Pyramid), (a.sweep.outer_quads.size() + a.sweep.stop_quads.size()) / 4);
     EXPECT_GT(a.mesh.cell_count(CellKind::Tet), 0u);
+    // The stopped end's rim is no outlet: the pipe goes on with tets.
+    std::vector<std::string> rims;
+    for (const NamedNodeSet& s : a.description.node_sets) rims.push_back(s.name);
+    EXPECT_EQ(rims, (std::vector<std::string>{"pipe_1_inlet", "pipe_1_ring_stop"}));
     const PipelineResult b = run_pipeline(prepared.pipeline_input(), two);
     EXPECT_EQ(a.mesh.x, b.mesh.x);
     EXPECT_EQ(a.mesh.z, b.mesh.z);

@@ -213,13 +213,14 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
     std::vector<double> clearance;
     const double st = std::max(plan.sweep_size, plan.initial_sweep_size);
     double need = kFaceRoom * st / kGuardMargin;
-    if (plan.dcb_tube == static_cast<int>(t) && drop.reason.find("face") != std::string::npos) {
+    const bool near_pipe = drop.reason.find("from the pipe") != std::string::npos;  // else near a face
+    if (!near_pipe && plan.dcb_tube == static_cast<int>(t)) {
         const TopoDS_Face face = face_of(model, plan.dcb_face);
         for (const Vec3& c : tube.centre_line) {
             BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x, c.y, c.z)).Vertex(), face);
             clearance.push_back(d.IsDone() ? d.Value() - tube.radius_max : 0.0);
         }
-    } else if (plan.dc_tube_a >= 0 && plan.dc_tube_b >= 0) {
+    } else if (near_pipe && plan.dc_tube_a >= 0 && plan.dc_tube_b >= 0) {
         const TubeInfo& other = tubes.tubes[static_cast<std::size_t>(
             plan.dc_tube_a == static_cast<int>(t) ? plan.dc_tube_b : plan.dc_tube_a)];
         need = kTubeRoom * st / kGuardMargin;
@@ -233,15 +234,16 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
             split_wall(model, wall_face_at(model, tube.faces, cut->centre), cut->centre, cut->tangent));
         PrepareOptions o = options;
         o.drop = drops_on_split(model, *split, options.drop);
-        o.stops = {{cut->centre, cut->keep, tube.radius_max,
-                    drop.reason}};
+        o.stops = {{cut->centre, cut->keep, tube.radius_max, drop.reason}};
         PreparedModel p = prepare_unguarded(*split, o);
         if (std::none_of(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }))
             return std::nullopt;
         p.split = std::move(split);
         return p;
-    } catch (const Error& e) {
-            return std::nullopt;
+    } catch (const Error&) {
+        return std::nullopt;
+    } catch (const Standard_Failure&) {  // a split OpenCASCADE could not make: the tube goes whole
+        return std::nullopt;
     }
 }
 

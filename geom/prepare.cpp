@@ -209,9 +209,10 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
                                               const PrepareOptions& options) {
     const TubeInfo& tube = tubes.tubes[t];
     if (tube.stop) return std::nullopt;
-    // From each centre-line point's wall to the face or pipe the drop names.
+    // From each centre-line point's wall to the face or pipe the drop names; a spot leaves less
+    // room than a ring as thick as St (at most the radius) and its pyramids take.
     std::vector<double> clearance;
-    const double st = std::max(plan.sweep_size, plan.initial_sweep_size);
+    const double st = std::min(std::max(plan.sweep_size, plan.initial_sweep_size), tube.radius_min);
     double need = kFaceRoom * st / kGuardMargin;
     const bool near_pipe = drop.reason.find("from the pipe") != std::string::npos;  // else near a face
     if (!near_pipe && plan.dcb_tube == static_cast<int>(t)) {

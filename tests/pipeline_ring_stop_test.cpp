@@ -19,6 +19,7 @@
 #include "engine/core/vec3_ops.hpp"
 #include "engine/pipeline/pipeline.hpp"
 #include "geom/model/model_occt.hpp"
+#include "geom/mesh_file.hpp"
 #include "geom/prepare.hpp"
 #include "geom/sizing/discretize_edges.hpp"
 #include "geom/tubes/ring_stop.hpp"
@@ -129,7 +130,11 @@ TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
     MeshOptions one, two;
     one.threads = 1;
     two.threads = 2;
-    const PipelineResult a = run_pipeline(prepared.pipeline_input(), one);
+    // The whole run, with its retries: the stopped ring's pyramids may need a thinner St.
+    const geom::MeshRun run_one = geom::mesh_model(model, one), run_two = geom::mesh_model(model, two);
+    const PipelineResult &a = run_one.result, &b = run_two.result;
+    EXPECT_GT(geom::ring_share(run_one.coverage), 0.0);
+    EXPECT_LT(geom::ring_share(run_one.coverage), 1.0);
     const CheckReport check = check_mesh(a.mesh);
     EXPECT_TRUE(check.ok()) << describe(check);
     const TubeRing& ring = a.sweep.rings.at(0);
@@ -141,8 +146,8 @@ TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
     std::vector<std::string> rims;
     for (const NamedNodeSet& s : a.description.node_sets) rims.push_back(s.name);
     EXPECT_EQ(rims, (std::vector<std::string>{"pipe_1_inlet", "pipe_1_ring_stop"}));
-    const PipelineResult b = run_pipeline(prepared.pipeline_input(), two);
     EXPECT_EQ(a.mesh.x, b.mesh.x);
+    EXPECT_EQ(a.mesh.y, b.mesh.y);
     EXPECT_EQ(a.mesh.z, b.mesh.z);
     for (CellKind k : {CellKind::Hex, CellKind::Pyramid, CellKind::Tet})
         EXPECT_EQ(a.mesh.block(k).nodes, b.mesh.block(k).nodes);

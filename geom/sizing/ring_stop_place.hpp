@@ -23,8 +23,9 @@ struct RingCut {
 };
 
 // `clearance`: from the wall at each centre-line point to what the pipe was dropped for; a spot is
-// a point with less than `need` (room for a ring of full St and its pyramids: a ring thinned
-// towards where it stops leaves its end quads' pyramids no room between its last layer's). nullopt
+// a point with less than `need` (the caller's: room for a ring as thick as St, at most the radius,
+// and its pyramids; a ring much thinner than its layers are long where it stops leaves its end
+// quads' pyramids little room, and the run's retry thins St then). nullopt
 // when no point is a spot, or neither end keeps kShortestStoppedRing diameters.
 std::optional<RingCut> ring_cut(const TubeInfo& tube, const std::vector<double>& clearance, double need);
 

@@ -130,9 +130,9 @@ RingDrop with_beyond(const TubeInfo& t, RingDrop d) {
     return d;
 }
 
-void drop_given(TubeSearch& tubes, const std::vector<RingDrop>& given, bool on_split, std::vector<RingDrop>& dropped) {
+void drop_given(TubeSearch& tubes, const std::vector<RingDrop>& given, int splits, std::vector<RingDrop>& dropped) {
     for (const RingDrop& d : given)
-        for (auto t = tubes.tubes.begin(); t != tubes.tubes.end() && d.on_split == on_split; ++t)
+        for (auto t = tubes.tubes.begin(); t != tubes.tubes.end() && d.splits == splits; ++t)
             if (same_faces(t->faces, d.faces)) {
                 dropped.push_back(with_beyond(*t, {d.faces, t->radius_min, t->length, d.reason, d.warning}));
                 tubes.tubes.erase(t);
@@ -179,12 +179,14 @@ void apply_stops(const Model& model, const std::vector<PrepareOptions::StopAt>& 
         }
 }
 
-// Drops the caller gave for the model `split_wall` made from `model`, in the split's face ids.
-std::vector<RingDrop> drops_on_split(const Model& model, const Model& split, const std::vector<RingDrop>& given) {
+// The caller's drops for the model `split_wall` made from `model` (after `splits` splits): those in
+// `model`'s face ids move to the split's, those for later splits stay.
+std::vector<RingDrop> drops_on_split(const Model& model, const Model& split, int splits, const std::vector<RingDrop>& given) {
     const std::vector<int> same = same_faces_in(model, split);
     std::vector<RingDrop> out;
     for (RingDrop d : given) {
-        if (!d.on_split) {
+        if (d.splits < splits) continue;
+        if (d.splits == splits) {
             bool all = true;
             for (int& f : d.faces) {
                 f = f >= 1 && f <= static_cast<int>(same.size()) ? same[static_cast<std::size_t>(f - 1)] : 0;
@@ -192,7 +194,7 @@ std::vector<RingDrop> drops_on_split(const Model& model, const Model& split, con
             }
             if (!all) continue;
             std::sort(d.faces.begin(), d.faces.end());
-            d.on_split = true;
+            d.splits = splits + 1;
         }
         out.push_back(std::move(d));
     }
@@ -200,6 +202,9 @@ std::vector<RingDrop> drops_on_split(const Model& model, const Model& split, con
 }
 
 PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& options);
+
+// Each ring that stops prepares the model again, split once more: a few are worth it.
+constexpr std::size_t kMostRingStops = 4;
 
 // Tube t, dropped for a spot, keeping its ring on its longer stretch with room: the model with
 // its wall split before the spot, prepared; nullopt when no stretch is worth a ring or the split
@@ -233,13 +238,17 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
     try {
         auto split = std::make_shared<const Model>(
             split_wall(model, wall_face_at(model, tube.faces, cut->centre), cut->centre, cut->tangent));
+        const int splits = static_cast<int>(options.stops.size());
         PrepareOptions o = options;
-        o.drop = drops_on_split(model, *split, options.drop);
-        o.stops = {{cut->centre, cut->keep, tube.radius_max, drop.reason}};
+        o.drop = drops_on_split(model, *split, splits, options.drop);
+        o.stops.push_back({cut->centre, cut->keep, tube.radius_max, drop.reason});
         PreparedModel p = prepare_unguarded(*split, o);
-        if (std::none_of(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }))
+        // Every ring stopped so far still stops (none dropped after all), or this split is no use.
+        if (std::count_if(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }) <
+            static_cast<std::ptrdiff_t>(o.stops.size()))
             return std::nullopt;
-        p.split = std::move(split);
+        if (!p.split) p.split = std::move(split);
+        p.splits = std::max(p.splits, splits + 1);
         return p;
     } catch (const Error&) {
         return std::nullopt;
@@ -322,7 +331,7 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         p.tubes = find_tubes(model, options.tubes);
         apply_stops(model, options.stops, p.tubes);
         p.dropped = walls_without_ring(p.tubes, model.face_count());
-        drop_given(p.tubes, options.drop, !options.stops.empty(), p.dropped);
+        drop_given(p.tubes, options.drop, static_cast<int>(options.stops.size()), p.dropped);
         drop_branches(p.tubes, p.dropped);
         progress.finish();
     }
@@ -343,7 +352,7 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
             const int t = tube_without_room(p.tubes, p.plan, thinnest_ring(options.sizing.local_ring),
                                               thinnest_ring_to_face(options.sizing.local_ring), drop);
             if (t < 0) break;
-            if (drop.spot && options.stop_rings && options.stops.empty()) {
+            if (drop.spot && options.stop_rings && options.stops.size() < kMostRingStops) {
                 std::optional<PreparedModel> stopped =
                     stop_before_spot(model, p.tubes, static_cast<std::size_t>(t), p.plan, drop, options);
                 if (stopped) return std::move(*stopped);

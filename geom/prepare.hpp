@@ -45,7 +45,7 @@ struct PrepareOptions {
     // Tubes meshed without a ring whatever their room, each by its wall faces, with the reason and
     // warning (the retry's, once thinner rings failed: geom/run_retry.hpp).
     std::vector<RingDrop> drop;
-    // A pipe dropped for a spot keeps a ring on its longer stretch with room (one per run).
+    // A pipe dropped for a spot keeps a ring on its longer stretch with room.
     bool stop_rings = true;
     // Where prepare_model split a wall for a ring that stops (its own, on the split model): the
     // cross-section's centre, the end of the centre line that keeps the ring, and why.
@@ -84,6 +84,7 @@ public:
     // The model meshed when a ring stops: the given one with a pipe wall split where it stops;
     // null when prepare_model split nothing.
     std::shared_ptr<const Model> split;
+    int splits = 0;  // how many walls prepare_model split for it (each a ring that stops)
     const Model& meshed(const Model& given) const { return split ? *split : given; }
     // What the user should be told: no tube found, S lowered by the rules, the plan's own
     // warnings. One line each.

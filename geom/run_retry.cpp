@@ -82,7 +82,7 @@ void RunRetry::after(const RetryableFailure& failure, const PreparedModel& prepa
                              "{:.6g}: no hex ring, meshed with tetrahedra; for a hex ring, move the pipe or give a "
                              "larger --size",
                              *room_failure_, faces.size() == 1 ? "" : "s", list, kSweepSteps, sizes[t]),
-                 false, prepared.split != nullptr});
+                 false, prepared.splits});
             sizes.erase(sizes.begin() + t);
             sweep_steps_.erase(sweep_steps_.begin() + t);
         }

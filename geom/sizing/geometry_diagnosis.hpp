@@ -41,8 +41,9 @@ struct RingDrop {
     // Too little room at a spot (a face or a pipe too near there), not along the whole pipe: its
     // ring may stop before the spot instead (prepare.hpp).
     bool spot = false;
-    // `faces` are ids of the model prepare_model split where a ring stops (PreparedModel::split).
-    bool on_split = false;
+    // `faces` are ids of the model after this many of prepare_model's splits where rings stop
+    // (PreparedModel::splits); 0: the given model's.
+    int splits = 0;
 };
 
 // Throws tubemesh::Error when an edge of the solid bounds more than two faces: its boundary

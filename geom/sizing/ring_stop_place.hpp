@@ -2,7 +2,7 @@
 // Where a pipe that has room for a ring along most of its length but not at one spot (a face or
 // another pipe too near there) stops its ring: on a cross-section a diameter before the first
 // place, seen from the end with the longer stretch of room, where the clearance leaves less room
-// than a ring of full St takes. The wall beyond gets tets (geom/tubes/ring_stop.hpp).
+// than the caller asks for. The wall beyond gets tets (geom/tubes/ring_stop.hpp).
 //
 // No OpenCASCADE header here.
 #include <optional>

@@ -241,7 +241,10 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
         const int splits = static_cast<int>(options.stops.size());
         PrepareOptions o = options;
         o.drop = drops_on_split(model, *split, splits, options.drop);
-        o.stops.push_back({cut->centre, cut->keep, tube.radius_max, drop.reason});
+        // The drop's face ids are this model's, not the split's: the reason names none.
+        const std::string how_near = drop.reason.substr(0, drop.reason.find(" from "));
+        o.stops.push_back({cut->centre, cut->keep, tube.radius_max,
+                           fmt::format("{} from {}", how_near, near_pipe ? "another pipe" : "a face")});
         PreparedModel p = prepare_unguarded(*split, o);
         // Every ring stopped so far still stops (none dropped after all), or this split is no use.
         if (std::count_if(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }) <

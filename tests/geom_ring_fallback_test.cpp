@@ -67,7 +67,7 @@ std::vector<Case> cases() {
          "pipe walls that meet each other"},
         {"touching", block("touching", {line({0, y, z}, {4, y, z}), line({2, 0, z + 2 * r}, {2, 4, z + 2 * r})}),
          // Each pipe keeps a ring that stops before the spot where they touch.
-         "0 r from", "comes too near at one spot (0 r from the pipe", false, true},
+         "0 r from", "comes too near at one spot (0 r from another pipe)", false, true},
         {"tenth_of_r_from_a_face", block("0.1 r", {line({0, y, 4 - 1.1 * r}, {4, y, 4 - 1.1 * r})}),
          "0.1 r from face", "passes 0.01 from face", true},
         {"quarter_r_apart",

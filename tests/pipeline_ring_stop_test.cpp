@@ -110,6 +110,10 @@ TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
     const geom::PreparedModel prepared = geom::prepare_model(model, geom::prepare_options(MeshOptions{}));
     ASSERT_TRUE(prepared.split != nullptr);
     EXPECT_EQ(prepared.split->face_count(), model.face_count() + 1);
+    // Every face but the split wall is found again in the split model (the retry's drops move there).
+    const std::vector<int> same = geom::same_faces_in(model, *prepared.split);
+    EXPECT_EQ(std::count(same.begin(), same.end(), 0), 1);
+    EXPECT_EQ(std::set<int>(same.begin(), same.end()).size(), same.size());
     ASSERT_EQ(prepared.tubes.tubes.size(), 1u);
     ASSERT_TRUE(prepared.tubes.tubes[0].stop.has_value());
     EXPECT_TRUE(prepared.dropped.empty());

@@ -86,7 +86,8 @@ void finish_run(MeshRun& run, const Model& model, const PreparedModel& prepared,
                 c.thickest = ring.thickest;
             }
         const std::string thinned = retry.ring_reason(t);
-        if (!thinned.empty()) c.reason = thinned;
+        // A ring that stops keeps saying why it stops.
+        if (!thinned.empty()) c.reason = c.length > 0 ? fmt::format("{}; {}", c.reason, thinned) : thinned;
         if (c.thinnest < c.thickest && c.reason.empty()) c.reason = "thinned locally where a face or a tube is near";
     }
 }
@@ -112,7 +113,8 @@ MeshRun mesh_working(const Model& model, const MeshOptions& user_options, Stage 
             continue;
         }
         retry.accept();
-        finish_run(run, model, prepared, options, std::move(first), retry, k);
+        // Groups and names are the meshed model's: the split one when a ring stops.
+        finish_run(run, prepared.meshed(model), prepared, options, std::move(first), retry, k);
         scale_back(run, k);
         for (const std::string& line : coverage_lines(run.coverage)) run.model_lines.push_back(line);
         return run;

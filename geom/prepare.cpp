@@ -1,11 +1,15 @@
 #include "geom/prepare.hpp"
 
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <Standard_Failure.hxx>
+#include <gp_Pnt.hxx>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <unordered_set>
 
 #include "engine/core/timing.hpp"
@@ -16,6 +20,9 @@
 #include "geom/sizing/geometry_diagnosis.hpp"
 #include "geom/sizing/sizing_distances.hpp"
 #include "geom/model/surface_map_occt.hpp"
+#include "geom/model/model_occt.hpp"
+#include "geom/sizing/ring_stop_place.hpp"
+#include "geom/tubes/ring_stop.hpp"
 #include "geom/working_scale.hpp"
 
 namespace tubemesh::geom {
@@ -101,6 +108,13 @@ std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& 
                     "tetrahedra only");
     // A hole that lost its ring says so by name: the tets are a fallback, not what was asked for.
     for (const RingDrop& d : dropped) w.push_back(d.warning);
+    for (const TubeInfo& t : tubes.tubes)
+        if (t.stop)
+            w.push_back(fmt::format("the pipe of wall faces {} comes too near at one spot ({}): its hex ring stops on a "
+                                    "cross-section before it ({:.0f}% of its length), and its wall beyond (faces {}) is "
+                                    "meshed with tetrahedra; for a ring along all of it, move the pipe",
+                                    join(whole_tube(t).faces), t.stop->reason, 100 * t.length / t.stop->length,
+                                    join(t.stop->beyond)));
     for (const std::string& x : plan.warnings) w.push_back(x);
     return w;
 }
@@ -108,11 +122,20 @@ std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& 
 bool same_faces(const std::vector<int>& a, const std::vector<int>& b) { return a == b; }
 
 // The tubes the caller drops whatever their room (the retry's) leave the search for `dropped`.
-void drop_given(TubeSearch& tubes, const std::vector<RingDrop>& given, std::vector<RingDrop>& dropped) {
+// A tube whose ring stopped and is dropped after all takes the wall beyond with it.
+RingDrop with_beyond(const TubeInfo& t, RingDrop d) {
+    if (!t.stop) return d;
+    d.faces.insert(d.faces.end(), t.stop->beyond.begin(), t.stop->beyond.end());
+    std::sort(d.faces.begin(), d.faces.end());
+    d.length = t.stop->length;
+    return d;
+}
+
+void drop_given(TubeSearch& tubes, const std::vector<RingDrop>& given, int splits, std::vector<RingDrop>& dropped) {
     for (const RingDrop& d : given)
-        for (auto t = tubes.tubes.begin(); t != tubes.tubes.end(); ++t)
+        for (auto t = tubes.tubes.begin(); t != tubes.tubes.end() && d.splits == splits; ++t)
             if (same_faces(t->faces, d.faces)) {
-                dropped.push_back({d.faces, t->radius_min, t->length, d.reason, d.warning});
+                dropped.push_back(with_beyond(*t, {d.faces, t->radius_min, t->length, d.reason, d.warning}));
                 tubes.tubes.erase(t);
                 break;
             }
@@ -138,7 +161,104 @@ TubeSearch tet_holes(const Model& model, const TubeSearch& tubes, const std::vec
     }
     for (const RingDrop& d : dropped)
         if (d.length > 0) holes.rejected.push_back({d.faces, d.reason, 2, false, d.radius});
+    for (const TubeInfo& t : tubes.tubes)
+        if (t.stop) holes.rejected.push_back({t.stop->beyond, "beyond where its ring stops", 2, false, t.radius_min});
     return holes;
+}
+
+// The tubes the caller stopped (PrepareOptions::stops) cut back to their stretch: each stop's
+// closed edge, found on one tube's wall near the cross-section's centre.
+void apply_stops(const Model& model, const std::vector<PrepareOptions::StopAt>& stops, TubeSearch& tubes) {
+    for (const PrepareOptions::StopAt& s : stops)
+        for (TubeInfo& t : tubes.tubes) {
+            if (t.stop) continue;
+            const int edge = stop_edge_at(model, t.faces, s.centre, s.radius);
+            if (edge == 0) continue;
+            t = stopped_tube(model, t, edge, s.keep);
+            t.stop->reason = s.reason;
+            break;
+        }
+}
+
+// The caller's drops for the model `split_wall` made from `model` (after `splits` splits): those in
+// `model`'s face ids move to the split's, those for later splits stay.
+std::vector<RingDrop> drops_on_split(const Model& model, const Model& split, int splits, const std::vector<RingDrop>& given) {
+    const std::vector<int> same = same_faces_in(model, split);
+    std::vector<RingDrop> out;
+    for (RingDrop d : given) {
+        if (d.splits < splits) continue;
+        if (d.splits == splits) {
+            bool all = true;
+            for (int& f : d.faces) {
+                f = f >= 1 && f <= static_cast<int>(same.size()) ? same[static_cast<std::size_t>(f - 1)] : 0;
+                all = all && f > 0;
+            }
+            if (!all) continue;
+            std::sort(d.faces.begin(), d.faces.end());
+            d.splits = splits + 1;
+        }
+        out.push_back(std::move(d));
+    }
+    return out;
+}
+
+PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& options);
+
+// Each ring that stops prepares the model again, split once more: a few are worth it.
+constexpr std::size_t kMostRingStops = 4;
+
+// Tube t, dropped for a spot, keeping its ring on its longer stretch with room: the model with
+// its wall split before the spot, prepared; nullopt when no stretch is worth a ring or the split
+// fails (the tube is then dropped whole).
+std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSearch& tubes, std::size_t t,
+                                              const SizePlan& plan, const RingDrop& drop,
+                                              const PrepareOptions& options) {
+    const TubeInfo& tube = tubes.tubes[t];
+    if (tube.stop) return std::nullopt;
+    // From each centre-line point's wall to the face or pipe the drop names; a spot leaves less
+    // room than a ring as thick as St (at most the radius) and its pyramids take.
+    std::vector<double> clearance;
+    const double st = std::min(std::max(plan.sweep_size, plan.initial_sweep_size), tube.radius_min);
+    double need = kFaceRoom * st / kGuardMargin;
+    const bool near_pipe = drop.reason.find("from the pipe") != std::string::npos;  // else near a face
+    if (!near_pipe && plan.dcb_tube == static_cast<int>(t)) {
+        const TopoDS_Face face = face_of(model, plan.dcb_face);
+        for (const Vec3& c : tube.centre_line) {
+            BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(gp_Pnt(c.x, c.y, c.z)).Vertex(), face);
+            clearance.push_back(d.IsDone() ? d.Value() - tube.radius_max : 0.0);
+        }
+    } else if (near_pipe && plan.dc_tube_a >= 0 && plan.dc_tube_b >= 0) {
+        const TubeInfo& other = tubes.tubes[static_cast<std::size_t>(
+            plan.dc_tube_a == static_cast<int>(t) ? plan.dc_tube_b : plan.dc_tube_a)];
+        need = kTubeRoom * st / kGuardMargin;
+        for (const Vec3& c : tube.centre_line)
+            clearance.push_back(polyline_distance({c}, other.centre_line) - tube.radius_max - other.radius_max);
+    }
+    const std::optional<RingCut> cut = ring_cut(tube, clearance, need);
+    if (!cut) return std::nullopt;
+    try {
+        auto split = std::make_shared<const Model>(
+            split_wall(model, wall_face_at(model, tube.faces, cut->centre), cut->centre, cut->tangent));
+        const int splits = static_cast<int>(options.stops.size());
+        PrepareOptions o = options;
+        o.drop = drops_on_split(model, *split, splits, options.drop);
+        // The drop's face ids are this model's, not the split's: the reason names none.
+        const std::string how_near = drop.reason.substr(0, drop.reason.find(" from "));
+        o.stops.push_back({cut->centre, cut->keep, tube.radius_max,
+                           fmt::format("{} from {}", how_near, near_pipe ? "another pipe" : "a face")});
+        PreparedModel p = prepare_unguarded(*split, o);
+        // Every ring stopped so far still stops (none dropped after all), or this split is no use.
+        if (std::count_if(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }) <
+            static_cast<std::ptrdiff_t>(o.stops.size()))
+            return std::nullopt;
+        if (!p.split) p.split = std::move(split);
+        p.splits = std::max(p.splits, splits + 1);
+        return p;
+    } catch (const Error&) {
+        return std::nullopt;
+    } catch (const Standard_Failure&) {  // a split OpenCASCADE could not make: the tube goes whole
+        return std::nullopt;
+    }
 }
 
 // Per pipe: a ring at the plan's St (or the caller's per tube), or none and why.
@@ -151,7 +271,14 @@ std::vector<RingCoverage> ring_coverage(const Model& model, const TubeSearch& tu
         const double st = t < given.size() && given[t] > 0 ? given[t] : plan.sweep_size;
         RingCoverage c{tube.faces, static_cast<int>(t + 1),
                        2 * std::numbers::pi * (tube.radius_min + tube.radius_max) / 2 * tube.length, 1.0, st, st, {}};
-        if (!plan.changes.empty())
+        if (tube.stop) {
+            c.faces = whole_tube(tube).faces;
+            c.share = tube.length / tube.stop->length;
+            c.wall_area /= c.share;
+            c.ring_length = tube.length;
+            c.length = tube.stop->length;
+            c.reason = fmt::format("ring stops before a spot {}", tube.stop->reason);
+        } else if (!plan.changes.empty())
             c.reason = fmt::format("St cut by {}: {}", sizing_rule_name(plan.changes.back().rule), plan.changes.back().reason);
         out.push_back(std::move(c));
     }
@@ -207,8 +334,9 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         PhaseProgress progress(options.progress, "tubes", 1);
         refuse_self_contact(model);
         p.tubes = find_tubes(model, options.tubes);
+        apply_stops(model, options.stops, p.tubes);
         p.dropped = walls_without_ring(p.tubes, model.face_count());
-        drop_given(p.tubes, options.drop, p.dropped);
+        drop_given(p.tubes, options.drop, static_cast<int>(options.stops.size()), p.dropped);
         drop_branches(p.tubes, p.dropped);
         progress.finish();
     }
@@ -229,11 +357,18 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
             const int t = tube_without_room(p.tubes, p.plan, thinnest_ring(options.sizing.local_ring),
                                               thinnest_ring_to_face(options.sizing.local_ring), drop);
             if (t < 0) break;
+            if (drop.spot && options.stop_rings && options.stops.size() < kMostRingStops) {
+                std::optional<PreparedModel> stopped =
+                    stop_before_spot(model, p.tubes, static_cast<std::size_t>(t), p.plan, drop, options);
+                if (stopped) return std::move(*stopped);
+            }
+            const TubeInfo& gone = p.tubes.tubes[static_cast<std::size_t>(t)];
+            p.dropped.push_back(with_beyond(gone, std::move(drop)));
             p.tubes.tubes.erase(p.tubes.tubes.begin() + t);
-            p.dropped.push_back(std::move(drop));
         }
         refuse_contradictory_sizes(p.plan, options.sizing, !p.tubes.tubes.empty());
-        holes = hole_groups(model, p.dropped.empty() ? p.tubes : tet_holes(model, p.tubes, p.dropped), p.plan.size);
+        const bool stops = std::any_of(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); });
+        holes = hole_groups(model, p.dropped.empty() && !stops ? p.tubes : tet_holes(model, p.tubes, p.dropped), p.plan.size);
         // A pipe without a ring was warned of already, narrow gap or not.
         const std::vector<HoleClearance> gaps = measure_hole_clearances(model, holes);
         narrow_gap_warnings(gaps, p.flat_tets_cause);
@@ -337,6 +472,10 @@ std::vector<std::string> PreparedModel::report_lines(int scale_exponent) const {
         lines.push_back(fmt::format("  tube {}: faces {}, radius {:.6g}, length {:.6g}, hosts face_{} and face_{}",
                                     t + 1, join(tube.faces), tube.radius_max, tube.length, tube.hosts[0],
                                     tube.hosts[1]));
+        if (const TubeInfo& raw = tubes.tubes[t]; raw.stop)
+            lines.push_back(fmt::format("    ring stops at edge {} ({:.0f}% of its length): {}; faces {} beyond get tets",
+                                        raw.stop->edge, 100 * raw.length / raw.stop->length, raw.stop->reason,
+                                        join(raw.stop->beyond)));
         if (t < geometry.tubes.size() && !geometry.tubes[t].room.empty()) {
             const auto& th = geometry.tubes[t].room.thickness;
             lines.push_back(fmt::format("    ring thinned locally to {:.3g} (St {:.6g}) where a face or a tube is near",

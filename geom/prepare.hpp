@@ -13,6 +13,11 @@
 // thinnest ring worth making: geom/sizing/geometry_diagnosis.hpp) is meshed like a hole that is no
 // tube, with a warning, and St and S are planned from the other tubes alone; the gap between its
 // wall and a near face gets triangles and tets of the gap's size (geom/sizing/gap_sizes.hpp).
+// A pipe with room along most of its length but not at a spot near one end or along it keeps its
+// ring on the longer stretch with room instead: the wall is split by a cross-section a diameter
+// before the spot (geom/sizing/ring_stop_place.hpp), the ring stops there with pyramids on its end
+// quads, and the wall beyond gets tets. The model meshed is then the split one
+// (PreparedModel::split), whose face ids the mesh's groups and the retry's drops use.
 //
 // No OpenCASCADE header here.
 #include <memory>
@@ -40,6 +45,16 @@ struct PrepareOptions {
     // Tubes meshed without a ring whatever their room, each by its wall faces, with the reason and
     // warning (the retry's, once thinner rings failed: geom/run_retry.hpp).
     std::vector<RingDrop> drop;
+    // A pipe dropped for a spot keeps a ring on its longer stretch with room.
+    bool stop_rings = true;
+    // Where prepare_model split a wall for a ring that stops (its own, on the split model): the
+    // cross-section's centre, the end of the centre line that keeps the ring, and why.
+    struct StopAt {
+        Vec3 centre, keep;
+        double radius = 0;
+        std::string reason;
+    };
+    std::vector<StopAt> stops;
     ProgressCallback progress;     // phases "tubes", "sizes", "discretize"; empty = silent
     double size_growth = MeshOptions{}.size_growth;  // the surface size field's, for the gap sizes
     int grid_bits = 0;  // > 0: the engine's input on a grid (MeshOptions::grid_bits, engine_grid.hpp)
@@ -67,6 +82,11 @@ public:
     // tets when its tets are flat (under kThinnestRing of the radius), else pipe walls that meet;
     // empty when neither.
     std::string flat_tets_cause;
+    // The model meshed when a ring stops: the given one with a pipe wall split where it stops;
+    // null when prepare_model split nothing.
+    std::shared_ptr<const Model> split;
+    int splits = 0;  // how many walls prepare_model split for it (each a ring that stops)
+    const Model& meshed(const Model& given) const { return split ? *split : given; }
     // What the user should be told: no tube found, S lowered by the rules, the plan's own
     // warnings. One line each.
     std::vector<std::string> warnings;

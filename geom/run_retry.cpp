@@ -81,7 +81,8 @@ void RunRetry::after(const RetryableFailure& failure, const PreparedModel& prepa
                  fmt::format("{} in front of the ring of the pipe of wall face{} {}, thinned {} times down to St = "
                              "{:.6g}: no hex ring, meshed with tetrahedra; for a hex ring, move the pipe or give a "
                              "larger --size",
-                             *room_failure_, faces.size() == 1 ? "" : "s", list, kSweepSteps, sizes[t])});
+                             *room_failure_, faces.size() == 1 ? "" : "s", list, kSweepSteps, sizes[t]),
+                 false, prepared.splits});
             sizes.erase(sizes.begin() + t);
             sweep_steps_.erase(sweep_steps_.begin() + t);
         }

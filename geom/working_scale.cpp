@@ -101,6 +101,8 @@ void scale_back(MeshRun& run, int k) {
         c.wall_area = rescale(c.wall_area, k, 2);
         c.thinnest = from_working(c.thinnest, k);
         c.thickest = from_working(c.thickest, k);
+        c.ring_length = from_working(c.ring_length, k);
+        c.length = from_working(c.length, k);
     }
     run.size = from_working(run.size, k);
     run.sweep_size = from_working(run.sweep_size, k);

@@ -68,6 +68,8 @@ nlohmann::json pipes_json(const std::vector<geom::RingCoverage>& pipes) {
                             {"ring_thickness", {{"min", p.thinnest}, {"max", p.thickest}}},
                             {"reason", p.reason}};
         if (p.tube > 0) j["ring"] = "pipe_" + std::to_string(p.tube);
+        // A ring that stops inside the solid: the stretch of centre line under it.
+        if (p.length > 0) j["ring_stretch"] = {{"ring_length", p.ring_length}, {"length", p.length}};
         out.push_back(std::move(j));
     }
     return out;

@@ -51,6 +51,8 @@ struct Case {
     // The paper's one St for every ring (--global-ring): a pipe 0.1 r from a face or 0.25 r from
     // another loses its ring only then; rings thinned locally fit there (LocalRingKeepsCloseRings).
     bool global_ring = false;
+    // The pipes are too close at one spot only: each keeps a ring that stops before it (prepare.hpp).
+    bool stops = false;
 };
 
 std::vector<Case> cases() {
@@ -64,7 +66,8 @@ std::vector<Case> cases() {
         {"cross", block("cross", {line({0, y, z}, {4, y, z}), line({2, 0, z}, {2, 4, z})}), "pipe walls meet",
          "pipe walls that meet each other"},
         {"touching", block("touching", {line({0, y, z}, {4, y, z}), line({2, 0, z + 2 * r}, {2, 4, z + 2 * r})}),
-         "0 r from the pipe of wall face", "they touch"},
+         // Each pipe keeps a ring that stops before the spot where they touch.
+         "0 r from", "comes too near at one spot (0 r from another pipe)", false, true},
         {"tenth_of_r_from_a_face", block("0.1 r", {line({0, y, 4 - 1.1 * r}, {4, y, 4 - 1.1 * r})}),
          "0.1 r from face", "passes 0.01 from face", true},
         {"quarter_r_apart",
@@ -87,17 +90,23 @@ TEST_P(RingFallback, MeshesWithTetsWhereNoRingFitsAndKeepsTheOtherRing) {
     EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
 
     // The far pipe keeps its ring at the St it has alone: the smallest diameter, uncut.
-    ASSERT_EQ(run.tubes, 1u);
+    ASSERT_EQ(run.tubes, c.stops ? 3u : 1u);
+    if (c.stops) {
+        EXPECT_EQ(std::count_if(run.coverage.begin(), run.coverage.end(),
+                                [](const geom::RingCoverage& p) { return p.tube > 0 && p.share > 0 && p.share < 1; }),
+                  2);
+    }
     EXPECT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
     EXPECT_GT(r.mesh.cell_count(CellKind::Pyramid), 0u);
-    EXPECT_DOUBLE_EQ(run.sweep_size, 2 * kRadius);
+    // (On a wall split where a ring stops the diameters measure a few ulps off.)
+    EXPECT_NEAR(run.sweep_size, 2 * kRadius, 1e-12);
 
     const auto ring = std::find_if(run.coverage.begin(), run.coverage.end(),
-                                   [](const geom::RingCoverage& p) { return p.tube == 1; });
+                                   [](const geom::RingCoverage& p) { return p.tube > 0 && p.length == 0; });
     ASSERT_NE(ring, run.coverage.end());
     EXPECT_EQ(ring->share, 1.0);
-    EXPECT_DOUBLE_EQ(ring->thinnest, 2 * kRadius);
-    EXPECT_DOUBLE_EQ(ring->thickest, 2 * kRadius);
+    EXPECT_NEAR(ring->thinnest, 2 * kRadius, 1e-12);
+    EXPECT_NEAR(ring->thickest, 2 * kRadius, 1e-12);
 
     // Every other pipe is named, without a ring, with a reason; the first to lose it with c.reason.
     int without = 0, named = 0;
@@ -109,8 +118,10 @@ TEST_P(RingFallback, MeshesWithTetsWhereNoRingFitsAndKeepsTheOtherRing) {
         EXPECT_FALSE(p.reason.empty());
         named += p.reason.find(c.reason) != std::string::npos;
     }
-    EXPECT_GE(without, 1);
-    EXPECT_GE(named, 1) << ::testing::PrintToString(run.model_lines);
+    EXPECT_GE(without, c.stops ? 0 : 1);
+    if (!c.stops) {
+        EXPECT_GE(named, 1) << ::testing::PrintToString(run.model_lines);
+    }
     EXPECT_LT(geom::ring_share(run.coverage), 1.0);
     EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(), [&](const std::string& w) {
         return w.find(c.warning) != std::string::npos && w.find("meshed with tetrahedra") != std::string::npos;

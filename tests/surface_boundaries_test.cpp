@@ -116,6 +116,30 @@ TEST(SurfaceBoundaries, CylinderWithSeamAndRing) {
     EXPECT_GE(rep.fraction_above_40, 0.95);
 }
 
+// The bottom circle is where a ring stops (TubeData::stops): its polyline takes the ring's
+// nodes, and the seam, which ends at that circle's vertex, starts at the ring's node there.
+TEST(SurfaceBoundaries, FixedEdgeNodesAreTheRingsAndShareTheirVertex) {
+    const double r = 0.5, H = 1.2;
+    const auto circle = [&](double z) { return [=](double t) { return Vec3{r * std::cos(t), r * std::sin(t), z}; }; };
+    std::vector<EdgePolyline> edges = {cut(1, 1, 1, 0, 2 * pi, 16, circle(0)), cut(2, 2, 2, 0, 2 * pi, 32, circle(H)),
+                                       cut(3, 1, 2, 0, H, 8, [&](double t) { return Vec3{r, 0, t}; })};
+    HybridMesh mesh;
+    surface::FixedEdgeNodes ring{1, {}};
+    for (int k = 0; k < 16; ++k) {
+        const Vec3 p = circle(0)(2 * pi * k / 16);
+        ring.ids.push_back(mesh.add_point(p.x, p.y, p.z));
+    }
+    ring.ids.push_back(ring.ids.front());
+    const index_t before = mesh.point_count();
+    const EdgeNodes nodes = surface::add_edge_nodes(edges, mesh, {&ring, 1});
+    EXPECT_EQ(mesh.point_count(), before + 32u + 7u);  // the top circle and the seam's inner nodes only
+    EXPECT_EQ(nodes.nodes[nodes.polyline_of.at(1)], ring.ids);
+    EXPECT_EQ(nodes.nodes[nodes.polyline_of.at(3)].front(), ring.ids.front());
+    EXPECT_EQ(nodes.vertex_node.at(1), ring.ids.front());
+    ring.ids.pop_back();
+    EXPECT_THROW(surface::add_edge_nodes(edges, mesh, {&ring, 1}), Error);
+}
+
 TEST(SurfaceBoundaries, ConeApexIsADegenerateEdge) {
     const double alpha = 0.5, H = 1.0;
     TrimmedSurface<ConeSurface> s(0.0, alpha, ParamRange{0, 2 * pi, true, 2 * pi}, ParamRange{0, H});

@@ -5,6 +5,7 @@
 //
 // B-rep ids are geom::Model's 1-based face / edge / vertex numbers (0 is never an id), so
 // "face_3" in a report is face id 3 here.
+#include <array>
 #include <vector>
 
 #include "engine/core/types.hpp"
@@ -60,6 +61,20 @@ struct TubeData {
 
     // Where the ring must be thinner than St (empty: nowhere).
     RingRoom room;
+
+    // stops[e]: end e (0: ring1's, 1: ring2's) lies on a cross-section inside the solid, not on a
+    // host face: the ring stops there because no ring worth making fits beyond (walls that meet,
+    // a blind end, too little room). That end's station and ring lie in the plane normal to the
+    // centre line there (ring node 0 at the end loop's vertex); its loop is the closed edge where
+    // the ring's stretch of wall meets the stretch beyond, and its host is the face beyond, which
+    // is meshed with triangles that take the ring's wall nodes on that edge. Its end quads are
+    // not boundary faces but fronts that get pyramids, like the outer quads.
+    std::array<bool, 2> stops{};
+    // Per stopped end: the loop edge's curve parameter at ring nodes 0, 1, ..., n - 1 and at node
+    // 0 again at the other end of the closed edge's range (n + 1 values, increasing or decreasing),
+    // and the edge's one B-rep vertex (at ring node 0).
+    std::array<std::vector<double>, 2> stop_params;
+    std::array<index_t, 2> stop_vertex{};
 };
 
 // How far a curved B-rep edge's chords may stray from it, as a fraction of each chord's own

@@ -74,6 +74,11 @@ std::vector<std::string> mesh_notes(const HybridMesh& mesh, const MeshDescriptio
             sets += " " + n.name + " (" + std::to_string(n.nodes.size()) + ")";
         lines.push_back(sets);
         lines.push_back("  pipe_<k>_inlet / _outlet: the wall nodes at the pipe's first / second end (inspect's host1 / host2)");
+        for (const NamedNodeSet& n : description->node_sets)
+            if (n.name.ends_with("_ring_stop")) {
+                lines.push_back("  pipe_<k>_ring_stop: the wall nodes where a pipe's hex ring stops inside the solid (its wall goes on with tetrahedra)");
+                break;
+            }
     }
     return lines;
 }

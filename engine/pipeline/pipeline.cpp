@@ -42,6 +42,7 @@ constexpr double kRingJoinShare = 1e-6;
 
 // Each ring's wall nodes at its two end stations, named after the pipe's wall group. A joined
 // end is no rim; a pipe of joined rings has its two rims, the second named as the first is not.
+// A stopped end's (TubeData::stops) is "<pipe>_ring_stop".
 void add_rims(const SweepResult& sweep, const std::vector<RingJoin>& joins, const HybridMesh& mesh,
               MeshDescription& description) {
     const auto joined = [&](index_t tube, int end) {
@@ -59,6 +60,8 @@ void add_rims(const SweepResult& sweep, const std::vector<RingJoin>& joins, cons
                                    [&](const NamedNodeSet& s) { return s.name == n; });
             };
             if (named(name)) name = pipe + (e == 0 ? "_outlet" : "_inlet");
+            // Where a ring stops the pipe goes on, meshed with tets: no end of the pipe.
+            if (ring.stopped[static_cast<std::size_t>(e)]) name = pipe + "_ring_stop";
             NamedNodeSet rim{name, {}};
             const index_t station = e == 0 ? 0 : ring.stations - 1;
             for (index_t k = 0; k < ring.circumferential; ++k) rim.nodes.push_back(ring.node(station, 0, k));
@@ -108,6 +111,43 @@ struct SurfacePass {
     index_t edge_points = 0;
 };
 
+// The edge where each stopped ring end meets the wall beyond (TubeData::stops), as a closed
+// polyline through the ring's wall nodes at that station, appended to `edges`, and those nodes
+// for add_edge_nodes: the face beyond meets the ring node for node.
+void append_stop_edges(const DiscreteGeometry& g, const SweepResult& sweep, const HybridMesh& mesh,
+                       std::vector<EdgePolyline>& edges, std::vector<surface::FixedEdgeNodes>& fixed) {
+    for (std::size_t t = 0; t < g.tubes.size() && t < sweep.rings.size(); ++t) {
+        const TubeData& tube = g.tubes[t];
+        const TubeRing& ring = sweep.rings[t];
+        for (std::size_t e = 0; e < 2; ++e) {
+            if (!tube.stops[e]) continue;
+            const std::vector<index_t>& loop = e == 0 ? tube.loop1_edges : tube.loop2_edges;
+            const std::vector<double>& params = tube.stop_params[e];
+            const index_t n = ring.circumferential;
+            if (loop.size() != 1 || params.size() != std::size_t{n} + 1)
+                throw Error("a ring that stops needs one closed edge where it stops and " + std::to_string(n + 1) +
+                            " parameters along it, got " + std::to_string(loop.size()) + " edges and " +
+                            std::to_string(params.size()) + " parameters");
+            const index_t station = e == 0 ? 0 : ring.stations - 1;
+            // The polyline runs along the edge's parameter: the ring's order, or against it.
+            const bool forward = params.back() > params.front();
+            EdgePolyline line;
+            line.edge = loop.front();
+            surface::FixedEdgeNodes ids{line.edge, {}};
+            for (index_t q = 0; q <= n; ++q) {
+                const index_t k = forward ? q % n : (n - q) % n;
+                const index_t node = ring.node(station, 0, k);
+                ids.ids.push_back(node);
+                line.points.push_back(mesh.point(node));
+                line.params.push_back(forward ? params[q] : params[n - q]);
+            }
+            line.first_vertex = line.last_vertex = tube.stop_vertex[e];
+            edges.push_back(std::move(line));
+            fixed.push_back(std::move(ids));
+        }
+    }
+}
+
 // Every face that is not a tube wall (`walls`: tube_wall_faces), meshed into `mesh` with the
 // surface field plus `caps`.
 SurfacePass mesh_faces(const PipelineInput& in, const MeshOptions& opt, const SweepResult& sweep,
@@ -116,17 +156,20 @@ SurfacePass mesh_faces(const PipelineInput& in, const MeshOptions& opt, const Sw
     const DiscreteGeometry& g = in.geometry;
     std::vector<index_t> tube_loop_edges;
     for (const TubeData& t : g.tubes) {
-        tube_loop_edges.insert(tube_loop_edges.end(), t.loop1_edges.begin(), t.loop1_edges.end());
-        tube_loop_edges.insert(tube_loop_edges.end(), t.loop2_edges.begin(), t.loop2_edges.end());
+        // A stopped end's loop is an edge of the face beyond: that face takes the ring's nodes on it.
+        if (!t.stops[0]) tube_loop_edges.insert(tube_loop_edges.end(), t.loop1_edges.begin(), t.loop1_edges.end());
+        if (!t.stops[1]) tube_loop_edges.insert(tube_loop_edges.end(), t.loop2_edges.begin(), t.loop2_edges.end());
     }
 
     SurfaceSizing sizing = surface_sizing(in, sweep.rings, opt, caps);
+    std::vector<surface::FixedEdgeNodes> fixed;
+    append_stop_edges(g, sweep, mesh, sizing.edges, fixed);
     const std::vector<EdgePolyline>& edges = sizing.edges;
     const SizeField size(sizing.options, std::move(sizing.sources));
 
     SurfacePass pass;
     const index_t points_before = mesh.point_count();
-    const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(edges, mesh);
+    const surface::EdgeNodes edge_nodes = surface::add_edge_nodes(edges, mesh, fixed);
     pass.edge_points = mesh.point_count() - points_before;
 
     std::vector<surface::SurfaceFace> faces;
@@ -206,8 +249,15 @@ std::vector<index_t> tubes_of_fronts(const SweepResult& sweep, const std::vector
     for (const TubeRing& ring : sweep.rings) {
         const index_t first = ring.first_lateral_quad;
         const index_t end = first + (ring.stations - 1) * ring.circumferential;
-        const auto at = std::lower_bound(fronts.begin(), fronts.end(), first);
+        auto at = std::lower_bound(fronts.begin(), fronts.end(), first);
         if (at != fronts.end() && *at < end) tubes.push_back(ring.tube);
+        // Stop quads follow all outer quads (run_pyramids).
+        const index_t lateral = static_cast<index_t>(sweep.outer_quads.size() / 4);
+        const index_t stop = lateral + ring.first_stop_quad;
+        const index_t stop_end = stop + (index_t(ring.stopped[0]) + index_t(ring.stopped[1])) * ring.radial_layers *
+                                            ring.circumferential;
+        at = std::lower_bound(fronts.begin(), fronts.end(), stop);
+        if (at != fronts.end() && *at < stop_end) tubes.push_back(ring.tube);
     }
     std::sort(tubes.begin(), tubes.end());
     tubes.erase(std::unique(tubes.begin(), tubes.end()), tubes.end());
@@ -224,7 +274,25 @@ void run_pyramids(const PipelineInput& input, const MeshOptions& opt, PipelineRe
     in.front_quads = out.sweep.outer_quads;
     in.boundary_triangles = boundary;
     in.obstacle_quads = out.sweep.end_quads;
-    const ThinRingShares thin = thin_ring_shares(mesh, out.sweep, opt.pyramids.height_factor);
+    ThinRingShares thin = thin_ring_shares(mesh, out.sweep, opt.pyramids.height_factor);
+    // Rings that stop inside the solid: their end quads are fronts too, after the outer quads,
+    // and no obstacles.
+    std::vector<index_t> fronts, obstacles;
+    if (!out.sweep.stop_quads.empty()) {
+        fronts = out.sweep.outer_quads;
+        fronts.insert(fronts.end(), out.sweep.stop_quads.begin(), out.sweep.stop_quads.end());
+        for (const TubeRing& ring : out.sweep.rings)
+            for (std::size_t e = 0; e < 2; ++e) {
+                if (ring.stopped[e]) continue;
+                const std::size_t first = 4 * (std::size_t{ring.first_end_quad} + e * ring.radial_layers * ring.circumferential);
+                const std::size_t count = 4 * std::size_t{ring.radial_layers} * ring.circumferential;
+                obstacles.insert(obstacles.end(), out.sweep.end_quads.begin() + first,
+                                 out.sweep.end_quads.begin() + first + count);
+            }
+        in.front_quads = fronts;
+        in.obstacle_quads = obstacles;
+        if (!thin.apex.empty()) thin.apex.resize(fronts.size() / 4, 1.0);
+    }
     in.front_scale = thin.apex;
     in.region = mesh.region_id("pyramids");
     in.sweep_size = opt.sweep.sweep_size > 0 ? opt.sweep.sweep_size : input.geometry.sweep_size;

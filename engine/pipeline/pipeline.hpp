@@ -193,7 +193,8 @@ struct PhaseReport {
 struct PipelineResult {
     HybridMesh mesh;
     // For the files and the report: after Sweep each pipe's rims, node sets "pipe_<k>_inlet"
-    // (the wall nodes of the tube's first end, host1) and "pipe_<k>_outlet", and its stations
+    // (the wall nodes of the tube's first end, host1) and "pipe_<k>_outlet" ("pipe_<k>_ring_stop"
+    // where the ring stops inside the solid: TubeData::stops), and its stations
     // (MeshDescription::pipes, for the water network); geom adds the
     // length unit and the surface groups' CAD kinds and aliases.
     MeshDescription description;

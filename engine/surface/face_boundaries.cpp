@@ -9,9 +9,22 @@
 
 namespace tubemesh::surface {
 
-EdgeNodes add_edge_nodes(std::span<const EdgePolyline> edges, HybridMesh& mesh) {
+EdgeNodes add_edge_nodes(std::span<const EdgePolyline> edges, HybridMesh& mesh, std::span<const FixedEdgeNodes> fixed) {
     EdgeNodes out;
     out.nodes.reserve(edges.size());
+    std::unordered_map<index_t, const FixedEdgeNodes*> fixed_of;
+    for (const FixedEdgeNodes& f : fixed) fixed_of.emplace(f.edge, &f);
+    // A fixed edge's vertices are its end nodes, for every polyline that ends there.
+    for (const EdgePolyline& e : edges) {
+        const auto it = fixed_of.find(e.edge);
+        if (it == fixed_of.end()) continue;
+        const std::vector<index_t>& ids = it->second->ids;
+        if (ids.size() != e.points.size() || ids.size() < 2)
+            throw Error("edge_" + std::to_string(e.edge) + ": " + std::to_string(ids.size()) +
+                        " fixed nodes for a polyline of " + std::to_string(e.points.size()) + " points");
+        if (e.first_vertex != 0) out.vertex_node.emplace(e.first_vertex, ids.front());
+        if (e.last_vertex != 0) out.vertex_node.emplace(e.last_vertex, ids.back());
+    }
     const auto vertex_node = [&](index_t vertex, const Vec3& p) {
         if (vertex == 0) return mesh.add_point(p.x, p.y, p.z);  // 0 is never a B-rep id: no vertex
         auto [it, fresh] = out.vertex_node.try_emplace(vertex, 0);
@@ -24,11 +37,15 @@ EdgeNodes add_edge_nodes(std::span<const EdgePolyline> edges, HybridMesh& mesh) 
         if (n < 2 || e.params.size() != n)
             throw Error("edge_" + std::to_string(e.edge) + ": its polyline has " + std::to_string(n) + " points and " +
                         std::to_string(e.params.size()) + " parameters (needs at least 2 of each, equally many)");
+        out.polyline_of.emplace(e.edge, static_cast<index_t>(i));
+        if (const auto it = fixed_of.find(e.edge); it != fixed_of.end()) {
+            out.nodes.push_back(it->second->ids);
+            continue;
+        }
         std::vector<index_t> ids(n);
         ids.front() = vertex_node(e.first_vertex, e.points.front());
         for (std::size_t k = 1; k + 1 < n; ++k) ids[k] = mesh.add_point(e.points[k].x, e.points[k].y, e.points[k].z);
         ids.back() = vertex_node(e.last_vertex, e.points.back());
-        out.polyline_of.emplace(e.edge, static_cast<index_t>(i));
         out.nodes.push_back(std::move(ids));
     }
     return out;

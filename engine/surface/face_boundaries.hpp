@@ -51,10 +51,20 @@ std::vector<EdgePolyline> follow_size_field(std::span<const EdgePolyline> edges,
 // meeting it with triangles of h(x). Appends to `out`.
 void add_short_edge_sources(std::span<const EdgePolyline> edges, const SizeField& size, std::vector<SizeSource>& out);
 
+// A polyline whose points are mesh nodes already: a stopped ring's wall nodes on the edge where
+// the ring stops (TubeData::stops), so the face beyond meets the ring node for node.
+struct FixedEdgeNodes {
+    index_t edge = 0;
+    std::vector<index_t> ids;  // one per polyline point, in its order
+};
+
 // Adds the points of every polyline to the mesh, each B-rep vertex once (the polylines' end
-// points), in polyline order. Throws tubemesh::Error for a polyline with fewer than 2 points
-// or with points and params of different lengths.
-EdgeNodes add_edge_nodes(std::span<const EdgePolyline> edges, HybridMesh& mesh);
+// points), in polyline order; the polylines of `fixed` edges take their given nodes instead, and
+// so do their vertices wherever another polyline ends there. Throws tubemesh::Error for a
+// polyline with fewer than 2 points or with points and params of different lengths, or a fixed
+// one with another number of nodes.
+EdgeNodes add_edge_nodes(std::span<const EdgePolyline> edges, HybridMesh& mesh,
+                         std::span<const FixedEdgeNodes> fixed = {});
 
 // A ring's outer polygon on its host face (engine/sweep's RingEnd): the hole to keep free.
 struct HolePolygon {

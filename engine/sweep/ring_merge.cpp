@@ -33,7 +33,7 @@ RingEnd outer_polygon(const TubePlan& p, const TubeData& tube, int e, index_t fi
     const bool reverse = dot(normal, outward) > 0;  // counter-clockwise seen from outside
 
     RingEnd r;
-    r.host = e == 0 ? tube.host1 : tube.host2;
+    r.host = tube.stops[ee] ? 0 : e == 0 ? tube.host1 : tube.host2;
     r.station = e == 0 ? 0 : static_cast<index_t>(p.stations() - 1);
     const RingCells cells = cells_of(p, first_node);
     for (std::size_t q = 0; q < n; ++q) {
@@ -68,7 +68,7 @@ std::size_t describe(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::
     stats.min_scaled_jacobian = tubes.empty() ? 0.0 : std::numeric_limits<double>::infinity();
     double sum_jacobian = 0, sum_condition = 0;
     std::size_t node = mesh.x.size(), hex = mesh.cell_count(CellKind::Hex), face = mesh.face_count(FaceKind::Quad);
-    std::size_t lateral = 0, end = 0;
+    std::size_t lateral = 0, end = 0, stop = 0;
     result.rings.resize(tubes.size());
     for (std::size_t t = 0; t < tubes.size(); ++t) {
         const TubePlan& p = plans[t];
@@ -91,11 +91,16 @@ std::size_t describe(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::
         ring.first_lateral_quad = static_cast<index_t>(lateral);
         ring.first_end_quad = static_cast<index_t>(end);
         ring.wall_group = mesh.surface_group_id("pipe_" + std::to_string(t + 1));
-        ring.host_group = {mesh.surface_group_id("face_" + std::to_string(tubes[t].host1)),
-                           mesh.surface_group_id("face_" + std::to_string(tubes[t].host2))};
+        ring.stopped = tubes[t].stops;
+        const int stopped = int(ring.stopped[0]) + int(ring.stopped[1]);
+        for (std::size_t e = 0; e < 2; ++e)
+            if (!ring.stopped[e])
+                ring.host_group[e] = mesh.surface_group_id("face_" + std::to_string(e == 0 ? tubes[t].host1 : tubes[t].host2));
+        ring.first_stop_quad = static_cast<index_t>(stop);
+        stop += std::size_t(stopped) * layers * n;
         if (options.store_boundary_faces) {
             ring.first_boundary_face = static_cast<index_t>(face);
-            face += std::size_t{steps} * n + 2 * std::size_t{layers} * n;
+            face += std::size_t{steps} * n + std::size_t(2 - stopped) * layers * n;
         }
         for (int e = 0; e < 2; ++e) ring.ends[static_cast<std::size_t>(e)] = outer_polygon(p, tubes[t], e, ring.first_node);
         const RingQuality& q = quality[t];
@@ -116,6 +121,7 @@ std::size_t describe(HybridMesh& mesh, const std::vector<TubeData>& tubes, std::
     }
     stats.outer_quads = stats.wall_quads = static_cast<index_t>(lateral);
     stats.end_quads = static_cast<index_t>(end);
+    result.stop_quads.resize(4 * stop);
     if (stats.hexes > 0) {
         stats.mean_scaled_jacobian = sum_jacobian / stats.hexes;
         stats.mean_condition = sum_condition / stats.hexes;
@@ -162,8 +168,14 @@ void write(HybridMesh& mesh, const TubePlan& p, const std::vector<Vec3>& nodes, 
             for (index_t k = 0; k < n; ++k) {
                 const auto quad = cells.end_quad(station, e == 1, j, k);
                 put(result.end_quads, 4 * (std::size_t{ring.first_end_quad} + (e * layers + j) * n + k), quad);
+                // The ends before this one that have boundary quads, or that stop.
+                const index_t slot = e == 1 && ring.stopped[0] == ring.stopped[1] ? 1 : 0;
+                if (ring.stopped[e]) {
+                    put(result.stop_quads, 4 * (std::size_t{ring.first_stop_quad} + (slot * layers + j) * n + k), quad);
+                    continue;
+                }
                 if (!options.store_boundary_faces) continue;
-                const std::size_t f = std::size_t{ring.first_boundary_face} + std::size_t{steps} * n + (e * layers + j) * n + k;
+                const std::size_t f = std::size_t{ring.first_boundary_face} + std::size_t{steps} * n + (slot * layers + j) * n + k;
                 put(quads.nodes, 4 * f, quad);
                 quads.group[f] = ring.host_group[e];
             }

@@ -156,7 +156,13 @@ struct TubeRing {
     // above. kNoIndex otherwise.
     index_t first_boundary_face = kNoIndex;
     index_t wall_group = kNoIndex;                  // surface group "pipe_<tube + 1>" (joined: its pipe's)
-    std::array<index_t, 2> host_group{kNoIndex, kNoIndex};  // "face_<host1>", "face_<host2>"
+    std::array<index_t, 2> host_group{kNoIndex, kNoIndex};  // "face_<host1>", "face_<host2>"; kNoIndex at a stop
+    // stopped[e]: end e lies on a cross-section inside the solid (TubeData::stops). Its end quads
+    // are then no boundary faces (the ring's boundary quads leave that end's L·n out) and its
+    // RingEnd has host 0 (no hole in any face); they are stop quads instead: SweepResult's
+    // stop_quads [first_stop_quad, + L·n) for the first stopped end, the next L·n for the second.
+    std::array<bool, 2> stopped{};
+    index_t first_stop_quad = 0;
     std::array<RingEnd, 2> ends;
     std::vector<Vec3> centres;  // the centre-line point of each station
 
@@ -188,8 +194,13 @@ struct SweepResult {
     std::vector<index_t> outer_quads;
     // Wall quads: normal into the hole (outward of the solid).
     std::vector<index_t> wall_quads;
-    // End quads on the host faces: normal out of the solid. The pyramids' obstacle quads.
+    // End quads on the host faces: normal out of the solid. The pyramids' obstacle quads. A
+    // stopped end's are here too, in their place, and in stop_quads.
     std::vector<index_t> end_quads;
+    // The end quads of the ends that stop inside the solid (TubeRing::stopped), rings in order:
+    // normal away from the ring, along the centre line. Fronts that get pyramids, like the
+    // outer quads.
+    std::vector<index_t> stop_quads;
     // Per outer quad, the ring's thickness under it over St (the mean of its corners'), when
     // some ring is thinner than St somewhere; empty when every ring has its full St.
     std::vector<double> outer_quad_scale;

@@ -10,6 +10,7 @@
 #include "engine/sweep/frames.hpp"
 #include "engine/sweep/ring_dimensions.hpp"
 #include "engine/sweep/ring_room.hpp"
+#include "engine/sweep/stop_plane.hpp"
 
 namespace tubemesh::sweep {
 namespace {
@@ -90,7 +91,16 @@ TubePlan plan_tube(const TubeData& tube, index_t index, const SurfaceLookup& sur
     p.tube = index;
     p.n = static_cast<int>(tube.ring1.size());
     p.layers = options.radial_layers;
-    p.hosts = {surface_of(surfaces, tube.host1, "host"), surface_of(surfaces, tube.host2, "host")};
+    for (int e = 0; e < 2; ++e) {
+        const std::size_t ee = static_cast<std::size_t>(e);
+        if (tube.stops[ee]) {
+            const TubeStation& s = e == 0 ? tube.stations.front() : tube.stations.back();
+            p.stop_planes[ee] = stop_plane(s.centre, s.tangent, e == 1, s.radius);
+            p.hosts[ee] = p.stop_planes[ee].get();
+        } else {
+            p.hosts[ee] = surface_of(surfaces, e == 0 ? tube.host1 : tube.host2, "host");
+        }
+    }
     if (tube.wall_faces.empty()) throw Error("it has no wall faces");
     std::vector<const SurfaceMap*> walls;
     for (index_t f : tube.wall_faces) walls.push_back(surface_of(surfaces, f, "wall"));

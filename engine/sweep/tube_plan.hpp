@@ -2,6 +2,7 @@
 // Everything about one tube's ring that is decided before its nodes are placed: dimensions,
 // stations, end sections, and how angles and end depths fade along the tube.
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "engine/geometry/surface_map.hpp"
@@ -25,6 +26,8 @@ struct TubePlan {
     CentreLine line;
     std::array<EndSection, 2> ends;  // at the first and the last station
     std::array<const SurfaceMap*, 2> hosts{};
+    // The cross-sections a stopped end lies on (TubeData::stops); hosts[e] points at it then.
+    std::array<std::shared_ptr<const SurfaceMap>, 2> stop_planes;
     WallProjection wall;  // onto the tube's wall faces
     // Where the ring is thinner than St (TubeData::room); `thin` says whether it is anywhere:
     // without, every node keeps the full offsets and the computation is the paper's.

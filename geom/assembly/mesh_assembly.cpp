@@ -71,7 +71,9 @@ TubeInfo global_info(TubeInfo t, const AssemblySolid& s) {
 
 // Each solid's plan at one S: the given one, else the smallest of their defaults.
 std::vector<PreparedModel> prepare_solids(const Assembly& a, const MeshOptions& options) {
-    const PrepareOptions first = prepare_options(options);
+    // A split wall renumbers a solid's faces, which the glue between the solids names.
+    PrepareOptions first = prepare_options(options);
+    first.stop_rings = false;
     std::vector<PreparedModel> prepared;
     for (const AssemblySolid& s : a.solids()) prepared.push_back(prepare_model(s.model, first));
     if (options.size > 0) return prepared;
@@ -177,6 +179,7 @@ void one_sweep_size_per_pipe(const Assembly& a, const MeshOptions& options, cons
         const double st = least[find(k)];
         if (prepared[k].geometry.tubes.empty() || prepared[k].geometry.sweep_size == st) continue;
         PrepareOptions o = prepare_options(options);
+        o.stop_rings = false;
         o.sizing.size = prepared[k].plan.size;
         o.sizing.sweep_size = st;
         prepared[k] = prepare_model(a.solids()[k].model, o);

@@ -9,6 +9,7 @@
 #include "engine/sweep/sweep.hpp"
 #include "geom/sizing/discretize_edges.hpp"
 #include "geom/sizing/ring_room.hpp"
+#include "geom/tubes/ring_stop.hpp"
 #include "geom/tubes/tubes_axis.hpp"
 #include "geom/tubes/tubes_topology.hpp"
 #include "geom/tubes/tubes_wall.hpp"
@@ -86,8 +87,10 @@ DiscreteGeometry discretize(const Model& model, const std::vector<TubeInfo>& tub
     for (std::size_t i = 0; i < tubes.size(); ++i) {
         const TubeInfo& info = tubes[i];
         const bool own = i < options.tube_sweep_size.size() && options.tube_sweep_size[i] > 0;
-        out.tubes.push_back(
-            discretize_tube(index, info, own ? options.tube_sweep_size[i] : plan.sweep_size, options.ring_nodes));
+        // A ring that stops follows the whole wall, then is cut back to its stretch.
+        out.tubes.push_back(discretize_tube(index, info.stop ? whole_tube(info) : info,
+                                            own ? options.tube_sweep_size[i] : plan.sweep_size, options.ring_nodes));
+        if (info.stop) stop_ring_at_edge(model, info.stop->edge, out.tubes.back());
         out.tubes.back().room = rooms[i];
         for (int f : info.faces)
             for (const FaceWire& w : index.face_wires[f])

@@ -125,6 +125,7 @@ int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thin
                         "tetrahedra; for a hex ring, move the pipe at least {:.2g} away from face {}",
                         pipe(t), dcb, plan.dcb_face, dcb / r, r, dcb == 0 ? " - it touches the face" : "",
                         dcb / kFaceRoom, thinnest_to_face, 1.05 * kFaceRoom * thinnest_to_face * r, plan.dcb_face));
+        drop.spot = true;
         return plan.dcb_tube;
     }
     if (by_pipes < by_face && plan.dc_tube_a >= 0) {
@@ -146,6 +147,7 @@ int tube_without_room(const TubeSearch& tubes, const SizePlan& plan, double thin
                             "tetrahedra; for hex rings, keep the walls at least {:.2g} apart",
                             pipe(gone), dc, pipe(other), dc / r, r, dc == 0 ? " - they touch" : "", dc / kTubeRoom,
                             thinnest, 1.05 * kTubeRoom * thinnest * r));
+            drop.spot = true;
             return static_cast<int>(&gone - tubes.tubes.data());
         }
     }

@@ -38,6 +38,12 @@ struct RingDrop {
     double length = 0;       // of its centre line; 0 when not measured
     std::string reason;      // short, for the reports: "walls meet", "0.1 r from face 4", ...
     std::string warning;     // one line: the pipe, its faces, why, and what would give it a ring
+    // Too little room at a spot (a face or a pipe too near there), not along the whole pipe: its
+    // ring may stop before the spot instead (prepare.hpp).
+    bool spot = false;
+    // `faces` are ids of the model after this many of prepare_model's splits where rings stop
+    // (PreparedModel::splits); 0: the given model's.
+    int splits = 0;
 };
 
 // Throws tubemesh::Error when an edge of the solid bounds more than two faces: its boundary

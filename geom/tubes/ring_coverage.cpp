@@ -24,6 +24,7 @@ std::vector<std::string> coverage_lines(const std::vector<RingCoverage>& pipes) 
             p.tube > 0 ? fmt::format("  {}: {:.0f}% of wall area {:.4g} under a hex ring {:.4g} to {:.4g} thick", name,
                                      100 * p.share, p.wall_area, p.thinnest, p.thickest)
                        : fmt::format("  {}: no hex ring on wall area {:.4g}", name, p.wall_area);
+        if (p.length > 0) line += fmt::format(" (the ring stops {:.4g} along its length {:.4g})", p.ring_length, p.length);
         if (!p.reason.empty()) line += ": " + p.reason;
         lines.push_back(std::move(line));
     }

@@ -14,12 +14,15 @@ struct RingCoverage {
     std::vector<int> faces;  // the pipe's wall faces, ascending
     int tube = 0;            // its ring in the mesh (pipe_<tube>, 1-based); 0 without a ring
     double wall_area = 0;
-    // The fraction of wall_area under a hex ring, 0 to 1: a ring covers its tube's whole wall
-    // today, so 1 with a ring and 0 without.
+    // The fraction of wall_area under a hex ring, 0 to 1: 1 with a ring along the whole pipe, 0
+    // without, between for a ring that stops on a cross-section (TubeInfo::stop).
     double share = 0;
     double thinnest = 0, thickest = 0;  // the ring's thickness anywhere along it; 0 without a ring
     // Why the ring is thinner than the plan's St, or why there is none; empty when neither.
     std::string reason;
+    // A ring that stops: the length of centre line under it, from its kept end, and the whole
+    // pipe's; both 0 otherwise.
+    double ring_length = 0, length = 0;
 };
 
 // Wall area under a hex ring over all wall area; 1 when there is no wall.

@@ -12,6 +12,7 @@
 //
 // No OpenCASCADE header here: the CLI reports tubes through this file.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,21 @@ struct TubeInfo {
     // Points of the centre line from E1's end to E2's, about one per diameter and denser in
     // bends (no chord more than 1% of the radius off the axis). Sizing measures distances on it.
     std::vector<Vec3> centre_line;
+    // Set when the ring stops on a cross-section inside the solid (geom/tubes/ring_stop.hpp):
+    // `faces`, loops[1], hosts[1] and centre_line are then the stretch under the ring, up to the
+    // closed edge loops[1] = {edge}; the wall beyond (`beyond`, ending on `loop` of `host`) is
+    // meshed with triangles and tets.
+    struct Stop {
+        int edge = 0;
+        std::vector<int> beyond;  // ascending
+        std::vector<int> loop;
+        int host = 0;
+        double loop_length = 0;
+        double length = 0;  // of the whole centre line
+        std::vector<Vec3> centre_line;  // the whole one
+        std::string reason;  // why: the spot beyond, for the reports
+    };
+    std::optional<Stop> stop;
 };
 
 // A group of faces that looked like a tube but broke a rule, for `tubemesh inspect`.

@@ -98,30 +98,43 @@ inline void orient3d_filter_pair(const double* const p[2][4], int sign[2]) {
 }
 #endif
 
-// Sign of the insphere determinant (see insphere.cpp) when certain, else 0.
-inline int insphere_filter(const double* a, const double* b, const double* c, const double* d, const double* e) {
-    const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
-    const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
-    const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
-    const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
-    const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
-    const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
-    const double bcd = (bz * cd - cz * bd) + dz * bc;
-    const double acd = (az * cd - cz * ad) + dz * ac;
-    const double abd = (az * bd - bz * ad) + dz * ab;
-    const double abc = (az * bc - bz * ac) + cz * ab;
-    const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
-    const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
-    const double det = (la * bcd - lb * acd) + (lc * abd - ld * abc);
-    const double mx = std::max(abs_max3(ax, bx, cx), std::fabs(dx));
-    const double my = std::max(abs_max3(ay, by, cy), std::fabs(dy));
-    const double mz = std::max(abs_max3(az, bz, cz), std::fabs(dz));
-    const double m = max3(mx, my, mz);
-    if (!(min3(mx, my, mz) >= kInsphereMin && m <= kInsphereMax)) return 0;
-    const double bound = kInsphereBound * ((m * m) * ((mx * my) * mz));
-    return decided_sign(det, bound);
+// The insphere determinant's rows relative to e, their lifted determinant and per-axis extents,
+// shared by both filter stages.
+struct InsphereRows {
+    double ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
+    double la, lb, lc, ld;  // the rows' squared lengths
+    double det, mx, my, mz;
+};
+inline InsphereRows insphere_rows(const double* a, const double* b, const double* c, const double* d,
+                                  const double* e) {
+    InsphereRows r;
+    r.ax = a[0] - e[0], r.ay = a[1] - e[1], r.az = a[2] - e[2];
+    r.bx = b[0] - e[0], r.by = b[1] - e[1], r.bz = b[2] - e[2];
+    r.cx = c[0] - e[0], r.cy = c[1] - e[1], r.cz = c[2] - e[2];
+    r.dx = d[0] - e[0], r.dy = d[1] - e[1], r.dz = d[2] - e[2];
+    const double ab = r.ax * r.by - r.bx * r.ay, ac = r.ax * r.cy - r.cx * r.ay, ad = r.ax * r.dy - r.dx * r.ay;
+    const double bc = r.bx * r.cy - r.cx * r.by, bd = r.bx * r.dy - r.dx * r.by, cd = r.cx * r.dy - r.dx * r.cy;
+    const double bcd = (r.bz * cd - r.cz * bd) + r.dz * bc;
+    const double acd = (r.az * cd - r.cz * ad) + r.dz * ac;
+    const double abd = (r.az * bd - r.bz * ad) + r.dz * ab;
+    const double abc = (r.az * bc - r.bz * ac) + r.cz * ab;
+    r.la = (r.ax * r.ax + r.ay * r.ay) + r.az * r.az, r.lb = (r.bx * r.bx + r.by * r.by) + r.bz * r.bz;
+    r.lc = (r.cx * r.cx + r.cy * r.cy) + r.cz * r.cz, r.ld = (r.dx * r.dx + r.dy * r.dy) + r.dz * r.dz;
+    r.det = (r.la * bcd - r.lb * acd) + (r.lc * abd - r.ld * abc);
+    r.mx = std::max(abs_max3(r.ax, r.bx, r.cx), std::fabs(r.dx));
+    r.my = std::max(abs_max3(r.ay, r.by, r.cy), std::fabs(r.dy));
+    r.mz = std::max(abs_max3(r.az, r.bz, r.cz), std::fabs(r.dz));
+    return r;
 }
 
+// Sign of the insphere determinant (see insphere.cpp) when certain, else 0.
+inline int insphere_filter(const double* a, const double* b, const double* c, const double* d, const double* e) {
+    const InsphereRows r = insphere_rows(a, b, c, d, e);
+    const double m = max3(r.mx, r.my, r.mz);
+    if (!(min3(r.mx, r.my, r.mz) >= kInsphereMin && m <= kInsphereMax)) return 0;
+    const double bound = kInsphereBound * ((m * m) * ((r.mx * r.my) * r.mz));
+    return decided_sign(r.det, bound);
+}
 
 // A second, tighter stage of insphere_filter for the cases it leaves: the same determinant with
 // the bound from its monomials' absolute values (the permanent P) instead of 72 m^2 mx my mz.
@@ -133,23 +146,11 @@ inline constexpr double kInspherePermanentBound = 17.0 * 0x1p-53;
 inline constexpr double kInspherePermanentMin = 0x1p-250;
 inline int insphere_filter_permanent(const double* a, const double* b, const double* c, const double* d,
                                      const double* e) {
-    const double ax = a[0] - e[0], ay = a[1] - e[1], az = a[2] - e[2];
-    const double bx = b[0] - e[0], by = b[1] - e[1], bz = b[2] - e[2];
-    const double cx = c[0] - e[0], cy = c[1] - e[1], cz = c[2] - e[2];
-    const double dx = d[0] - e[0], dy = d[1] - e[1], dz = d[2] - e[2];
-    const double mx = std::max(abs_max3(ax, bx, cx), std::fabs(dx));
-    const double my = std::max(abs_max3(ay, by, cy), std::fabs(dy));
-    const double mz = std::max(abs_max3(az, bz, cz), std::fabs(dz));
-    if (!(min3(mx, my, mz) >= kInsphereMin && max3(mx, my, mz) <= kInsphereMax)) return 0;
-    const double ab = ax * by - bx * ay, ac = ax * cy - cx * ay, ad = ax * dy - dx * ay;
-    const double bc = bx * cy - cx * by, bd = bx * dy - dx * by, cd = cx * dy - dx * cy;
-    const double bcd = (bz * cd - cz * bd) + dz * bc;
-    const double acd = (az * cd - cz * ad) + dz * ac;
-    const double abd = (az * bd - bz * ad) + dz * ab;
-    const double abc = (az * bc - bz * ac) + cz * ab;
-    const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
-    const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
-    const double det = (la * bcd - lb * acd) + (lc * abd - ld * abc);
+    const InsphereRows r = insphere_rows(a, b, c, d, e);
+    if (!(min3(r.mx, r.my, r.mz) >= kInsphereMin && max3(r.mx, r.my, r.mz) <= kInsphereMax)) return 0;
+    const double ax = r.ax, ay = r.ay, az = r.az, bx = r.bx, by = r.by, bz = r.bz;
+    const double cx = r.cx, cy = r.cy, cz = r.cz, dx = r.dx, dy = r.dy, dz = r.dz;
+    const double la = r.la, lb = r.lb, lc = r.lc, ld = r.ld, det = r.det;
     // The 2x2 minors' permanents, then the 3x3 ones, each with absolute values.
     const auto p2 = [](double x0, double y1, double x1, double y0) {
         return std::fabs(x0 * y1) + std::fabs(x1 * y0);

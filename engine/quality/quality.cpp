@@ -271,14 +271,15 @@ QualitySummary summarize_quality(const HybridMesh& mesh, const Pulse& pulse) {
         dihedral[i] = tet_min_dihedral_degrees(p);
         aspect[i] = tet_aspect_ratio(p);
     });
-    beat(pulse);
-    s.tet_collapse = summarize(collapse, 0.0, 1.0);
-    beat(pulse);
-    s.tet_scaled_jacobian = summarize(tet_jacobian, 0.0, 1.0);
-    beat(pulse);
-    s.tet_min_dihedral = summarize(dihedral, 0.0, 90.0);
-    beat(pulse);
-    s.tet_aspect_ratio = summarize(aspect, 1.0, 4.0);
+    // Each measure's summary sorts its values: a beat before each.
+    const auto summarized = [&](const std::vector<double>& values, double lo, double hi) {
+        beat(pulse);
+        return summarize(values, lo, hi);
+    };
+    s.tet_collapse = summarized(collapse, 0.0, 1.0);
+    s.tet_scaled_jacobian = summarized(tet_jacobian, 0.0, 1.0);
+    s.tet_min_dihedral = summarized(dihedral, 0.0, 90.0);
+    s.tet_aspect_ratio = summarized(aspect, 1.0, 4.0);
     beat(pulse);
 
     const std::size_t hexes = mesh.block(CellKind::Hex).nodes.size() / 8;
@@ -289,12 +290,9 @@ QualitySummary summarize_quality(const HybridMesh& mesh, const Pulse& pulse) {
         condition[i] = q.condition;
         verdict[i] = std::min(q.scaled_jacobian, hex_centre_scaled_jacobian(p));
     });
-    beat(pulse);
-    s.hex_scaled_jacobian = summarize(jacobian, 0.0, 1.0);
-    beat(pulse);
-    s.hex_condition = summarize(condition, 1.0, 4.0);
-    beat(pulse);
-    s.hex_verdict_jacobian = summarize(verdict, 0.0, 1.0);
+    s.hex_scaled_jacobian = summarized(jacobian, 0.0, 1.0);
+    s.hex_condition = summarized(condition, 1.0, 4.0);
+    s.hex_verdict_jacobian = summarized(verdict, 0.0, 1.0);
     return s;
 }
 

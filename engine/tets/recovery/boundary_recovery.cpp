@@ -317,27 +317,24 @@ TetDomain recover_boundary(std::span<const double> xyz, std::span<const index_t>
     std::vector<Target> targets;
     targets.reserve(edges.size());
     for (const auto& [u, v] : edges) targets.push_back({u, v, kNoIndex});
-    beat(pulse);
-    std::vector<std::uint8_t> there = present_now(mesh, targets);
-    for (std::size_t i = 0; i < targets.size(); ++i) {
-        if (i % kPulseEvery == kPulseEvery - 1) beat(pulse);
-        if (there[i] || rec.present(targets[i])) continue;
-        ++st.missing_edges;
-        st.edges_by_flips += rec.recover(targets[i]);
-    }
+    // Recovers every target not already there; counts the missing and those flips alone gave.
+    const auto recover_targets = [&](index_t& missing, index_t& by_flips) {
+        beat(pulse);
+        const std::vector<std::uint8_t> there = present_now(mesh, targets);
+        for (std::size_t i = 0; i < targets.size(); ++i) {
+            if (i % kPulseEvery == kPulseEvery - 1) beat(pulse);
+            if (there[i] || rec.present(targets[i])) continue;
+            ++missing;
+            by_flips += rec.recover(targets[i]);
+        }
+    };
+    recover_targets(st.missing_edges, st.edges_by_flips);
     st.seconds_edges = seconds_since(t0);
     t0 = Clock::now();
     locks.lock_faces = true;
     targets.clear();
     for (std::size_t i = 0; i < front.size(); i += 3) targets.push_back({front[i], front[i + 1], front[i + 2]});
-    beat(pulse);
-    there = present_now(mesh, targets);
-    for (std::size_t i = 0; i < targets.size(); ++i) {
-        if (i % kPulseEvery == kPulseEvery - 1) beat(pulse);
-        if (there[i] || rec.present(targets[i])) continue;
-        ++st.missing_faces;
-        st.faces_by_flips += rec.recover(targets[i]);
-    }
+    recover_targets(st.missing_faces, st.faces_by_flips);
     st.seconds_faces = seconds_since(t0);
     st.steiner_inserted = static_cast<index_t>(rec.steiner.size());
     t0 = Clock::now();

@@ -142,10 +142,11 @@ Model import_model(const std::filesystem::path& path, const ImportOptions& optio
         if (options.solid == 0 && n > 1)
             throw Error(quoted(path) + " holds " + std::to_string(n) + " solids: choose one with " +
                         (options.keyword_names ? "solid=N" : "--solid N") + " (N from 1 to " + std::to_string(n) +
-                        "), or mesh them all as one conforming mesh with `tubemesh mesh --assembly`" +
-                        (options.keyword_names ? " (the Python module has no assembly)" : ""));
+                        "), or mesh them all as one conforming mesh with " +
+                        (options.keyword_names ? "assembly=True" : "`tubemesh mesh --assembly`"));
         if (options.solid < 0 || options.solid > n)
-            throw Error("--solid " + std::to_string(options.solid) + " is out of range: " + quoted(path) + " holds " +
+            throw Error((options.keyword_names ? "solid=" : "--solid ") + std::to_string(options.solid) +
+                        " is out of range: " + quoted(path) + " holds " +
                         plural(n, "solid", "solids") + " (N from 1 to " + std::to_string(n) + ")");
         report.solid_index = options.solid == 0 ? 1 : options.solid;
 

@@ -13,7 +13,7 @@ struct ImportOptions {
     // Run ShapeFix_Shape (default precision) on the chosen solid; its changes go to the report.
     bool heal = true;
     // How the message for several solids names the ways out: the command line's (--solid N,
-    // `tubemesh mesh --assembly`) or the Python module's keywords (solid=N; it has no assembly).
+    // `tubemesh mesh --assembly`) or the Python module's keywords (solid=N, assembly=True).
     bool keyword_names = false;
 };
 

@@ -40,7 +40,7 @@ def test_several_solids_name_the_keyword_and_the_assembly(tmp_path):
     message = str(e.value)
     assert "holds 2 solids" in message
     assert "solid=N (N from 1 to 2)" in message and "--solid" not in message
-    assert "the Python module has no assembly" in message and "tubemesh mesh --assembly" in message
+    assert "assembly=True" in message and "--assembly" not in message
 
 
 def test_bad_options_name_the_keyword():

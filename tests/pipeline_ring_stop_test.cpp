@@ -28,6 +28,18 @@
 namespace tubemesh {
 namespace {
 
+// The mesh passes the check, the first ring stops at its second end with one stop quad per end
+// quad, every front (outer and stopped-end quads) carries one pyramid, and tets fill the rest.
+void expect_conforming_with_a_stopped_end(const PipelineResult& r) {
+    const CheckReport check = check_mesh(r.mesh);
+    EXPECT_TRUE(check.ok()) << describe(check);
+    const TubeRing& ring = r.sweep.rings.at(0);
+    EXPECT_TRUE(ring.stopped[1]);
+    EXPECT_EQ(r.sweep.stop_quads.size(), 4u * ring.radial_layers * ring.circumferential);
+    EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), (r.sweep.outer_quads.size() + r.sweep.stop_quads.size()) / 4);
+    EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
+}
+
 // The closed edge two of the tube's wall faces share (not a seam): where its wall was split.
 int split_edge(const geom::Model& model, const TubeData& tube) {
     std::vector<TopTools_IndexedMapOfShape> edges(tube.wall_faces.size());
@@ -73,14 +85,8 @@ TEST(PipelineRingStop, ARingThatStopsMeetsTetsConformingly) {
     const PipelineResult r = run_pipeline(prepared.pipeline_input());
     std::printf("[ figures  ] hexes %u pyramids %u tets %u, stop quads %zu\n", r.mesh.cell_count(CellKind::Hex),
                 r.mesh.cell_count(CellKind::Pyramid), r.mesh.cell_count(CellKind::Tet), r.sweep.stop_quads.size() / 4);
-    const CheckReport check = check_mesh(r.mesh);
-    EXPECT_TRUE(check.ok()) << describe(check);
+    expect_conforming_with_a_stopped_end(r);
     const TubeRing& ring = r.sweep.rings.at(0);
-    EXPECT_TRUE(ring.stopped[1]);
-    EXPECT_EQ(r.sweep.stop_quads.size(), 4u * ring.radial_layers * ring.circumferential);
-    // One pyramid per front: the outer quads and the stopped end's quads.
-    EXPECT_EQ(r.mesh.cell_count(CellKind::Pyramid), (r.sweep.outer_quads.size() + r.sweep.stop_quads.size()) / 4);
-    EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
     // The ring's nodes reach the plane where it stops and no further.
     double ahead = -1;
     for (index_t i = ring.first_node; i < ring.first_node + ring.stations * (ring.radial_layers + 1) * ring.circumferential; ++i)
@@ -139,13 +145,7 @@ TEST(PipelineRingStop, APipeTooNearAFaceAtOneEndKeepsItsRingOnTheRest) {
     const PipelineResult &a = run_one.result, &b = run_two.result;
     EXPECT_GT(geom::ring_share(run_one.coverage), 0.0);
     EXPECT_LT(geom::ring_share(run_one.coverage), 1.0);
-    const CheckReport check = check_mesh(a.mesh);
-    EXPECT_TRUE(check.ok()) << describe(check);
-    const TubeRing& ring = a.sweep.rings.at(0);
-    EXPECT_TRUE(ring.stopped[1]);
-    EXPECT_EQ(a.sweep.stop_quads.size(), 4u * ring.radial_layers * ring.circumferential);
-    EXPECT_EQ(a.mesh.cell_count(CellKind::Pyramid), (a.sweep.outer_quads.size() + a.sweep.stop_quads.size()) / 4);
-    EXPECT_GT(a.mesh.cell_count(CellKind::Tet), 0u);
+    expect_conforming_with_a_stopped_end(a);
     // The stopped end's rim is no outlet: the pipe goes on with tets.
     std::vector<std::string> rims;
     for (const NamedNodeSet& s : a.description.node_sets) rims.push_back(s.name);

@@ -22,19 +22,8 @@ def test_missing_file_has_the_clis_message(cli, tmp_path):
     assert isinstance(e.value, RuntimeError)
 
 
-def test_several_solids_name_the_keyword_and_the_assembly(tmp_path):
-    import gmsh
-
-    step = str(tmp_path / "two.step")
-    gmsh.initialize()
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
-        gmsh.model.occ.addBox(5, 0, 0, 2, 2, 3)
-        gmsh.model.occ.synchronize()
-        gmsh.write(step)
-    finally:
-        gmsh.finalize()
+def test_several_solids_name_the_keyword_and_the_assembly(two_boxes):
+    step = two_boxes(5)
     with pytest.raises(tubemesh.Error) as e:
         tubemesh.mesh(step)
     message = str(e.value)

@@ -53,19 +53,8 @@ def test_the_manifest_schema_and_the_signature_share_the_options(cli):
         assert params[key].default == schema[key]["default"], key
 
 
-def test_an_assembly_as_the_command_line(tmp_path):
-    import gmsh
-
-    step = str(tmp_path / "two.step")
-    gmsh.initialize()
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
-        gmsh.model.occ.addBox(1, 0, 0, 1, 2, 3)  # shares the face x = 1
-        gmsh.model.occ.synchronize()
-        gmsh.write(step)
-    finally:
-        gmsh.finalize()
+def test_an_assembly_as_the_command_line(two_boxes):
+    step = two_boxes(1)  # shares the face x = 1
     m = tubemesh.mesh(step, assembly=True, size=0.5, threads=1)
     assert len(m.report["assembly"]["solids"]) == 2
     with pytest.raises(tubemesh.Error, match="^assembly meshes every solid: leave solid out$"):

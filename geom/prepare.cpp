@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <unordered_set>
 
 #include "engine/core/timing.hpp"
@@ -22,6 +23,7 @@
 #include "geom/model/surface_map_occt.hpp"
 #include "geom/model/model_occt.hpp"
 #include "geom/sizing/ring_stop_place.hpp"
+#include "geom/tubes/junction.hpp"
 #include "geom/tubes/ring_stop.hpp"
 #include "geom/working_scale.hpp"
 
@@ -100,6 +102,19 @@ ElementEstimate refuse_oversized_run(const Model& model, const TubeSearch& tubes
                                 options.budget, context);
 }
 
+// Why a ring stops, for a warning: a spot with too little room, or the wall of another pipe it
+// ends on (stop_before_junction's).
+constexpr std::string_view kJunction = "the wall of another pipe";
+constexpr std::string_view kBlindEnd = "its blind end";
+bool at_junction(const TubeInfo::Stop& stop) {
+    return stop.reason.find(kJunction) != std::string::npos || stop.reason == kBlindEnd;
+}
+std::string where_it_stops(const TubeInfo::Stop& stop) {
+    if (stop.reason == kBlindEnd) return "ends blind in the solid";
+    return at_junction(stop) ? fmt::format("meets {}", stop.reason)
+                             : fmt::format("comes too near at one spot ({})", stop.reason);
+}
+
 std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& plan,
                                        const std::vector<RingDrop>& dropped) {
     std::vector<std::string> w;
@@ -107,14 +122,29 @@ std::vector<std::string> plan_warnings(const TubeSearch& tubes, const SizePlan& 
         w.push_back("no tubular hole found in the solid: no hex rings or pyramids, the volume is meshed with "
                     "tetrahedra only");
     // A hole that lost its ring says so by name: the tets are a fallback, not what was asked for.
-    for (const RingDrop& d : dropped) w.push_back(d.warning);
+    // Walls that meet between stretches with rings are told with those pipes, below.
+    std::set<int> stretched;
     for (const TubeInfo& t : tubes.tubes)
-        if (t.stop)
-            w.push_back(fmt::format("the pipe of wall faces {} comes too near at one spot ({}): its hex ring stops on a "
-                                    "cross-section before it ({:.0f}% of its length), and its wall beyond (faces {}) is "
-                                    "meshed with tetrahedra; for a ring along all of it, move the pipe",
-                                    join(whole_tube(t).faces), t.stop->reason, 100 * t.length / t.stop->length,
-                                    join(t.stop->beyond)));
+        if (t.stop && t.stop->stretch_only) stretched.insert(t.stop->wall.begin(), t.stop->wall.end());
+    for (const RingDrop& d : dropped)
+        if (!std::all_of(d.faces.begin(), d.faces.end(), [&](int f) { return stretched.count(f) > 0; }))
+            w.push_back(d.warning);
+    for (std::size_t i = 0; i < tubes.tubes.size(); ++i) {
+        const TubeInfo& t = tubes.tubes[i];
+        if (!t.stop) continue;
+        // A pipe with rings either side of its spot is told once, at its first ring.
+        const auto same_pipe = [&](const TubeInfo& x) { return x.stop && x.stop->wall == t.stop->wall; };
+        if (std::any_of(tubes.tubes.begin(), tubes.tubes.begin() + static_cast<std::ptrdiff_t>(i), same_pipe)) continue;
+        double kept = 0;
+        for (const TubeInfo& x : tubes.tubes) kept += same_pipe(x) ? x.length : 0.0;
+        const bool both = kept > t.length;
+        w.push_back(fmt::format("the pipe of wall faces {} {}: {} ({:.0f}% of its length), and its wall {} (faces {}) "
+                                "is meshed with tetrahedra; for a ring along all of it, move the pipe",
+                                join(t.stop->wall), where_it_stops(*t.stop),
+                                both ? "its hex rings stop on cross-sections either side of it"
+                                     : "its hex ring stops on a cross-section before it",
+                                100 * kept / t.stop->length, both ? "between" : "beyond", join(t.stop->beyond)));
+    }
     for (const std::string& x : plan.warnings) w.push_back(x);
     return w;
 }
@@ -161,23 +191,113 @@ TubeSearch tet_holes(const Model& model, const TubeSearch& tubes, const std::vec
     }
     for (const RingDrop& d : dropped)
         if (d.length > 0) holes.rejected.push_back({d.faces, d.reason, 2, false, d.radius});
-    for (const TubeInfo& t : tubes.tubes)
-        if (t.stop) holes.rejected.push_back({t.stop->beyond, "beyond where its ring stops", 2, false, t.radius_min});
+    for (const TubeInfo& t : tubes.tubes) {
+        if (!t.stop) continue;
+        // The wall between the two rings of one pipe is one hole.
+        const bool seen = std::any_of(holes.rejected.begin(), holes.rejected.end(),
+                                      [&](const TubeRejection& r) { return r.faces == t.stop->beyond; });
+        if (!seen) holes.rejected.push_back({t.stop->beyond, "beyond where its ring stops", 2, false, t.radius_min});
+    }
     return holes;
 }
 
+// The stretch of a group of walls that meet (three or more loops) a stop cuts off, as a tube whose
+// ring stops there (junction.hpp); nullopt when the stop is not on the group's walls or that side
+// is no tube.
+std::optional<TubeInfo> stretch_of_group(const Model& model, const std::vector<int>& group,
+                                         const PrepareOptions::StopAt& s) {
+    const int edge = stop_edge_at(model, group, s.centre, s.radius);
+    if (edge == 0) return std::nullopt;
+    std::optional<TubeInfo> t = stretch_tube(model, group, edge, s.keep);
+    if (!t) return std::nullopt;
+    for (const JunctionPipe& pipe : junction_pipes(model, group, {})) {
+        if (!std::binary_search(pipe.faces.begin(), pipe.faces.end(), t->faces.front())) continue;
+        TubeInfo::Stop stop;
+        stop.edge = edge;
+        stop.wall = pipe.faces;
+        for (int f : pipe.faces)
+            if (!std::binary_search(t->faces.begin(), t->faces.end(), f)) stop.beyond.push_back(f);
+        stop.loop = t->loops[1];
+        stop.host = t->hosts[1];
+        stop.loop_length = t->loop_lengths[1];
+        std::vector<double> along = pipe.open;
+        along.insert(along.end(), pipe.junction.begin(), pipe.junction.end());
+        const auto [lo, hi] = std::minmax_element(along.begin(), along.end());
+        stop.length = along.empty() ? t->length : std::max(*hi - *lo, t->length);
+        stop.centre_line = t->centre_line;
+        stop.reason = s.reason;
+        stop.stretch_only = true;
+        t->stop = std::move(stop);
+        return t;
+    }
+    return std::nullopt;
+}
+
 // The tubes the caller stopped (PrepareOptions::stops) cut back to their stretch: each stop's
-// closed edge, found on one tube's wall near the cross-section's centre.
+// closed edge, found on one tube's wall near the cross-section's centre. A tube stopped twice
+// becomes two, one from each end, the second right after the first; the wall between is beyond both.
 void apply_stops(const Model& model, const std::vector<PrepareOptions::StopAt>& stops, TubeSearch& tubes) {
-    for (const PrepareOptions::StopAt& s : stops)
-        for (TubeInfo& t : tubes.tubes) {
-            if (t.stop) continue;
-            const int edge = stop_edge_at(model, t.faces, s.centre, s.radius);
+    const std::vector<TubeInfo> found = std::move(tubes.tubes);
+    std::vector<std::vector<TubeInfo>> stretches(found.size());
+    std::vector<TubeInfo> met;  // stretches of walls that meet, after the found tubes
+    for (const PrepareOptions::StopAt& s : stops) {
+        bool done = false;
+        for (std::size_t i = 0; i < found.size() && !done; ++i) {
+            if (stretches[i].size() == 2) continue;
+            const int edge = stop_edge_at(model, found[i].faces, s.centre, s.radius);
             if (edge == 0) continue;
-            t = stopped_tube(model, t, edge, s.keep);
-            t.stop->reason = s.reason;
-            break;
+            stretches[i].push_back(stopped_tube(model, found[i], edge, s.keep));
+            stretches[i].back().stop->reason = s.reason;
+            done = true;
         }
+        for (std::size_t g = 0; g < tubes.rejected.size() && !done; ++g)
+            if (std::optional<TubeInfo> t = stretch_of_group(model, tubes.rejected[g].faces, s)) {
+                met.push_back(std::move(*t));
+                done = true;
+            }
+    }
+    // The wall between a pipe's stretches is beyond them all; the group keeps what none holds.
+    for (TubeInfo& t : met)
+        std::erase_if(t.stop->beyond, [&](int f) {
+            return std::any_of(met.begin(), met.end(), [&](const TubeInfo& x) {
+                return std::binary_search(x.faces.begin(), x.faces.end(), f);
+            });
+        });
+    for (TubeRejection& r : tubes.rejected)
+        std::erase_if(r.faces, [&](int f) {
+            return std::any_of(met.begin(), met.end(), [&](const TubeInfo& x) {
+                return std::binary_search(x.faces.begin(), x.faces.end(), f);
+            });
+        });
+    std::erase_if(tubes.rejected, [](const TubeRejection& r) { return r.faces.empty() && r.loops > 2; });
+    tubes.tubes.clear();
+    for (std::size_t i = 0; i < found.size(); ++i) {
+        if (stretches[i].empty()) {
+            tubes.tubes.push_back(found[i]);
+            continue;
+        }
+        for (TubeInfo& t : stretches[i])
+            std::erase_if(t.stop->beyond, [&](int f) {
+                return std::any_of(stretches[i].begin(), stretches[i].end(), [&](const TubeInfo& x) {
+                    return std::binary_search(x.faces.begin(), x.faces.end(), f);
+                });
+            });
+        for (TubeInfo& t : stretches[i]) tubes.tubes.push_back(std::move(t));
+    }
+    for (TubeInfo& t : met) tubes.tubes.push_back(std::move(t));
+}
+
+// `faces` of `from` in `to`, the model split_wall made of it: those it kept, and the new ones.
+std::vector<int> faces_after_split(const Model& from, const Model& to, const std::vector<int>& faces) {
+    const std::vector<int> same = same_faces_in(from, to);
+    std::vector<int> out;
+    for (int f : faces)
+        if (f >= 1 && f <= static_cast<int>(same.size()) && same[static_cast<std::size_t>(f - 1)] > 0)
+            out.push_back(same[static_cast<std::size_t>(f - 1)]);
+    for (int f = 1; f <= to.face_count(); ++f)
+        if (std::find(same.begin(), same.end(), f) == same.end()) out.push_back(f);
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 // The caller's drops for the model `split_wall` made from `model` (after `splits` splits): those in
@@ -203,13 +323,17 @@ std::vector<RingDrop> drops_on_split(const Model& model, const Model& split, int
 }
 
 PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& options);
+std::optional<PreparedModel> split_and_prepare(const Model& model, std::vector<int> walls, const std::vector<RingCut>& cuts,
+                                               const std::vector<double>& radii, const std::string& reason,
+                                               const PrepareOptions& options);
 
-// Each ring that stops prepares the model again, split once more: a few are worth it.
-constexpr std::size_t kMostRingStops = 4;
+// Each ring that stops prepares the model again, split once more: a few are worth it. Eight lets
+// four pipes each keep rings on both sides of a spot, or two crossing pipes all four of theirs.
+constexpr std::size_t kMostRingStops = 8;
 
-// Tube t, dropped for a spot, keeping its ring on its longer stretch with room: the model with
-// its wall split before the spot, prepared; nullopt when no stretch is worth a ring or the split
-// fails (the tube is then dropped whole).
+// Tube t, dropped for a spot, keeping a ring on each stretch with room (ring_cuts): the model with
+// its wall split before the spot on each such side, prepared; nullopt when no stretch is worth a
+// ring or a split fails (the tube is then dropped whole).
 std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSearch& tubes, std::size_t t,
                                               const SizePlan& plan, const RingDrop& drop,
                                               const PrepareOptions& options) {
@@ -234,25 +358,43 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
         for (const Vec3& c : tube.centre_line)
             clearance.push_back(polyline_distance({c}, other.centre_line) - tube.radius_max - other.radius_max);
     }
-    const std::optional<RingCut> cut = ring_cut(tube, clearance, need);
-    if (!cut) return std::nullopt;
+    std::vector<RingCut> cuts = ring_cuts(tube, clearance, need);
+    // Past the limit the longer stretch alone keeps its ring.
+    if (options.stops.size() + cuts.size() > kMostRingStops) cuts.resize(1);
+    // The drop's face ids are this model's, not the split's: the reason names none.
+    const std::string how_near = drop.reason.substr(0, drop.reason.find(" from "));
+    return split_and_prepare(model, tube.faces, cuts, std::vector<double>(cuts.size(), tube.radius_max),
+                             fmt::format("{} from {}", how_near, near_pipe ? "another pipe" : "a face"), options);
+}
+
+// The pipe wall `walls` split at each of `cuts` (of a pipe of radius radii[i]), each stretch it
+// cuts off keeping a ring that stops there for `reason`, and the split model prepared; nullopt when
+// there is no cut or a split fails (the pipe is then meshed as it would have been without them).
+std::optional<PreparedModel> split_and_prepare(const Model& model, std::vector<int> walls, const std::vector<RingCut>& cuts,
+                                               const std::vector<double>& radii, const std::string& reason,
+                                               const PrepareOptions& options) {
+    if (cuts.empty()) return std::nullopt;
     try {
-        auto split = std::make_shared<const Model>(
-            split_wall(model, wall_face_at(model, tube.faces, cut->centre), cut->centre, cut->tangent));
-        const int splits = static_cast<int>(options.stops.size());
+        std::shared_ptr<const Model> split;
+        int splits = static_cast<int>(options.stops.size());
         PrepareOptions o = options;
-        o.drop = drops_on_split(model, *split, splits, options.drop);
-        // The drop's face ids are this model's, not the split's: the reason names none.
-        const std::string how_near = drop.reason.substr(0, drop.reason.find(" from "));
-        o.stops.push_back({cut->centre, cut->keep, tube.radius_max,
-                           fmt::format("{} from {}", how_near, near_pipe ? "another pipe" : "a face")});
+        for (std::size_t i = 0; i < cuts.size(); ++i) {
+            const RingCut& cut = cuts[i];
+            const Model& from = split ? *split : model;
+            auto next = std::make_shared<const Model>(
+                split_wall(from, wall_face_at(from, walls, cut.centre), cut.centre, cut.tangent));
+            o.drop = drops_on_split(from, *next, splits++, o.drop);
+            walls = faces_after_split(from, *next, walls);
+            o.stops.push_back({cut.centre, cut.keep, radii[i], reason});
+            split = std::move(next);
+        }
         PreparedModel p = prepare_unguarded(*split, o);
         // Every ring stopped so far still stops (none dropped after all), or this split is no use.
         if (std::count_if(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }) <
             static_cast<std::ptrdiff_t>(o.stops.size()))
             return std::nullopt;
         if (!p.split) p.split = std::move(split);
-        p.splits = std::max(p.splits, splits + 1);
+        p.splits = std::max(p.splits, splits);
         return p;
     } catch (const Error&) {
         return std::nullopt;
@@ -261,29 +403,94 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
     }
 }
 
+// The first tube that ends on a pipe wall (drop_branches' branch of a T-junction) keeping a ring
+// that stops a diameter before the other wall: the model with its wall split there, prepared;
+// nullopt when there is no such tube, its stretch is too short or the split fails.
+std::optional<PreparedModel> stop_before_junction(const Model& model, const TubeSearch& tubes,
+                                                  const std::vector<RingDrop>& dropped, const PrepareOptions& options) {
+    if (!options.stop_rings || options.stops.size() >= kMostRingStops) return std::nullopt;
+    std::set<int> walls;
+    for (const TubeInfo& t : tubes.tubes) walls.insert(t.faces.begin(), t.faces.end());
+    for (const RingDrop& d : dropped) walls.insert(d.faces.begin(), d.faces.end());
+    for (const TubeInfo& t : tubes.tubes) {
+        if (t.stop) continue;
+        for (int end = 0; end < 2; ++end) {
+            if (!walls.count(t.hosts[end]) || walls.count(t.hosts[1 - end])) continue;
+            const std::optional<RingCut> cut = cut_before_end(t, end, edge_points(model, t.loops[end]));
+            if (!cut) continue;
+            std::optional<PreparedModel> p = split_and_prepare(model, t.faces, {*cut}, {t.radius_max},
+                                                               fmt::format("face {}, {}", t.hosts[end], kJunction), options);
+            if (p) return p;
+        }
+    }
+    // Each cylinder of a group of walls that meet, cut before the junction on each side with an
+    // open end, and of a blind hole before its bottom (junction.hpp). Walls that meet have three or
+    // more loops, or two and cylinders of more than one axis (an L of drilled holes); a group with
+    // one loop that lost its ring ran from a wall into the host's faces: a tangent wall, left whole.
+    for (const TubeInfo& t : tubes.tubes)
+        if (t.stop) {
+            walls.insert(t.stop->wall.begin(), t.stop->wall.end());
+            walls.insert(t.stop->beyond.begin(), t.stop->beyond.end());
+        }
+    for (const TubeRejection& r : tubes.rejected) {
+        if (r.loops < 1 || r.crease) continue;
+        const bool blind = r.loops == 1 && std::none_of(dropped.begin(), dropped.end(), [&](const RingDrop& d) {
+                               return d.faces == r.faces;
+                           });
+        const std::vector<JunctionPipe> pipes = junction_pipes(model, r.faces, walls);
+        if (r.loops < 3 && !blind && !(r.loops == 2 && pipes.size() > 1)) continue;
+        std::vector<RingCut> cuts;
+        std::vector<double> radii;
+        for (const JunctionPipe& pipe : pipes)
+            for (const RingCut& cut : junction_cuts(pipe, blind ? kBlindMargin : kJunctionMargin))
+                if (options.stops.size() + cuts.size() < kMostRingStops) {
+                    cuts.push_back(cut);
+                    radii.push_back(pipe.radius);
+                }
+        std::optional<PreparedModel> p = split_and_prepare(model, r.faces, cuts, radii,
+                                                           blind ? std::string(kBlindEnd) : std::string(kJunction), options);
+        if (p) return p;
+    }
+    return std::nullopt;
+}
+
 // Per pipe: a ring at the plan's St (or the caller's per tube), or none and why.
 std::vector<RingCoverage> ring_coverage(const Model& model, const TubeSearch& tubes, const SizePlan& plan,
                                         const std::vector<RingDrop>& dropped, const PrepareOptions& options) {
     std::vector<RingCoverage> out;
     const std::vector<double>& given = options.discretize.tube_sweep_size;
+    // Walls that meet, cut into stretches with rings: the pipes' records hold their walls between.
+    std::set<int> stretched;
+    for (const TubeInfo& t : tubes.tubes)
+        if (t.stop && t.stop->stretch_only) stretched.insert(t.stop->wall.begin(), t.stop->wall.end());
     for (std::size_t t = 0; t < tubes.tubes.size(); ++t) {
         const TubeInfo& tube = tubes.tubes[t];
         const double st = t < given.size() && given[t] > 0 ? given[t] : plan.sweep_size;
         RingCoverage c{tube.faces, static_cast<int>(t + 1),
                        2 * std::numbers::pi * (tube.radius_min + tube.radius_max) / 2 * tube.length, 1.0, st, st, {}};
         if (tube.stop) {
-            c.faces = whole_tube(tube).faces;
+            c.faces = tube.stop->wall;
             c.share = tube.length / tube.stop->length;
             c.wall_area /= c.share;
             c.ring_length = tube.length;
             c.length = tube.stop->length;
-            c.reason = fmt::format("ring stops before a spot {}", tube.stop->reason);
+            c.reason = fmt::format("ring stops before {}{}", at_junction(*tube.stop) ? "" : "a spot ", tube.stop->reason);
+            // The second ring of a pipe, on the spot's other side, adds to the first's record.
+            const auto first = std::find_if(out.begin(), out.end(), [&](const RingCoverage& x) { return x.faces == c.faces; });
+            if (first != out.end()) {
+                first->share += c.share;
+                first->ring_length += c.ring_length;
+                first->reason = fmt::format("rings stop either side of {}", at_junction(*tube.stop) ? "a junction" : "a spot " + tube.stop->reason);
+                continue;
+            }
         } else if (!plan.changes.empty())
             c.reason = fmt::format("St cut by {}: {}", sizing_rule_name(plan.changes.back().rule), plan.changes.back().reason);
         out.push_back(std::move(c));
     }
     for (const RingDrop& d : dropped) {
         RingCoverage c{d.length > 0 ? d.faces : curved_faces(model, d.faces), 0, 0, 0, 0, 0, d.reason};
+        std::erase_if(c.faces, [&](int f) { return stretched.count(f) > 0; });
+        if (c.faces.empty()) continue;
         if (d.length > 0)
             c.wall_area = 2 * std::numbers::pi * d.radius * d.length;
         else
@@ -337,6 +544,8 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         apply_stops(model, options.stops, p.tubes);
         p.dropped = walls_without_ring(p.tubes, model.face_count());
         drop_given(p.tubes, options.drop, static_cast<int>(options.stops.size()), p.dropped);
+        if (std::optional<PreparedModel> stopped = stop_before_junction(model, p.tubes, p.dropped, options))
+            return std::move(*stopped);
         drop_branches(p.tubes, p.dropped);
         progress.finish();
     }
@@ -377,6 +586,11 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
             if (p.flat_tets_cause.empty() && d.length == 0)
                 p.flat_tets_cause = fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there",
                                                 join(d.faces));
+        // Or walls that meet between stretches with rings (an L of drilled holes is no drop).
+        for (const TubeInfo& t : p.tubes.tubes)
+            if (p.flat_tets_cause.empty() && t.stop && t.stop->stretch_only)
+                p.flat_tets_cause = fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there",
+                                                join(t.stop->beyond));
         std::vector<HoleClearance> holes_only;
         for (const HoleClearance& h : gaps)
             if (std::none_of(p.dropped.begin(), p.dropped.end(), [&](const RingDrop& d) { return d.faces == h.hole_faces; }))

@@ -13,10 +13,12 @@
 // thinnest ring worth making: geom/sizing/geometry_diagnosis.hpp) is meshed like a hole that is no
 // tube, with a warning, and St and S are planned from the other tubes alone; the gap between its
 // wall and a near face gets triangles and tets of the gap's size (geom/sizing/gap_sizes.hpp).
-// A pipe with room along most of its length but not at a spot near one end or along it keeps its
-// ring on the longer stretch with room instead: the wall is split by a cross-section a diameter
-// before the spot (geom/sizing/ring_stop_place.hpp), the ring stops there with pyramids on its end
-// quads, and the wall beyond gets tets. The model meshed is then the split one
+// A pipe with room along most of its length but not at a spot near one end or along it keeps a
+// ring on each stretch with room instead: the wall is split by a cross-section a diameter before
+// the spot on each side (geom/sizing/ring_stop_place.hpp), each ring stops there with pyramids on
+// its end quads, and the wall between gets tets. So do a branch that ends on another pipe's wall,
+// drilled holes whose walls meet and a blind hole (geom/tubes/junction.hpp): their stretches from
+// each open end stop before the junction or the bottom. The model meshed is then the split one
 // (PreparedModel::split), whose face ids the mesh's groups and the retry's drops use.
 //
 // No OpenCASCADE header here.

@@ -1,8 +1,9 @@
-// Pipes no hex ring fits are meshed with tets while the others keep their rings
-// (geom/sizing/geometry_diagnosis.hpp, geom/prepare.hpp): a T-junction, two pipes that cross, two
-// that touch, a pipe 0.1 r from a face and two pipes 0.25 r apart each mesh and pass the check, a
-// pipe far from them keeps its ring at the St it would have alone, and the report names the pipe
-// without a ring and why. A pipe tangent to a face along a line is refused: no conforming mesh
+// Pipes no whole hex ring fits are meshed with tets there while the others keep their rings
+// (geom/sizing/geometry_diagnosis.hpp, geom/prepare.hpp): a T-junction, two pipes that cross, an L
+// of drilled holes, a blind hole and two pipes that touch keep rings on every stretch with room;
+// a pipe 0.1 r from a face and two pipes 0.25 r apart each mesh and pass the check, a pipe far
+// from them keeps its ring at the default St, and the report names the pipe without a ring and
+// why. A pipe tangent to a face along a line is refused: no conforming mesh
 // has a boundary edge on four faces.
 #include <gtest/gtest.h>
 
@@ -51,8 +52,13 @@ struct Case {
     // The paper's one St for every ring (--global-ring): a pipe 0.1 r from a face or 0.25 r from
     // another loses its ring only then; rings thinned locally fit there (LocalRingKeepsCloseRings).
     bool global_ring = false;
-    // The pipes are too close at one spot only: each keeps a ring that stops before it (prepare.hpp).
+    // The pipes are too close at one spot only, or their walls meet: each stretch with room keeps a
+    // ring that stops before the spot or the junction (prepare.hpp).
     bool stops = false;
+    unsigned rings = 1;  // in the mesh, the far pipe's included
+    int stopped = 0;     // pipes whose rings stop
+    double share = 0;    // of each such pipe's wall under its rings, at least
+    double st = 2 * kRadius;  // the smallest diameter of a pipe with a ring
 };
 
 std::vector<Case> cases() {
@@ -60,14 +66,26 @@ std::vector<Case> cases() {
     return {
         // A branch as wide as the main pipe would meet it in a curve that pinches (two cylinders
         // of one radius meet in two ellipses crossing each other): a narrower branch, as usual.
+        // The main pipe keeps a ring on each side of the junction, the branch one that stops
+        // before it.
         {"t_junction",
          block("T", {line({0, y, z}, {4, y, z}), line({2, 0, z}, {2, y, z}, true, 1.4 * kRadius)}),
-         "pipe walls meet", "pipe walls that meet each other"},
-        {"cross", block("cross", {line({0, y, z}, {4, y, z}), line({2, 0, z}, {2, 4, z})}), "pipe walls meet",
-         "pipe walls that meet each other"},
+         "the wall of another pipe", "meets the wall of another pipe", false, true, 4, 2, 0.75, 1.4 * kRadius},
+        // The pipe along x keeps a ring on each side of the junction, the other on its longer side
+        // (its shorter one is under two diameters past the margin).
+        {"cross", block("cross", {line({0, y, z}, {4, y, z}), line({2, 0, z}, {2, 4, z})}), "the wall of another pipe",
+         "meets the wall of another pipe", false, true, 4, 2, 0.6},
+        // Two drilled holes meeting in an L: each keeps a ring that stops before the other's wall.
+        {"l_junction",
+         block("L", {line({0, y, z}, {2, y, z}, true), line({2, 0, z}, {2, y, z}, true, 1.4 * kRadius)}),
+         "the wall of another pipe", "meets the wall of another pipe", false, true, 3, 2, 0.75, 1.4 * kRadius},
+        // A blind hole keeps a ring that stops a diameter before its bottom.
+        {"blind_end", block("blind", {line({0, y, z}, {2.5, y, z}, true)}), "its blind end", "ends blind in the solid",
+         false, true, 2, 1, 0.9},
         {"touching", block("touching", {line({0, y, z}, {4, y, z}), line({2, 0, z + 2 * r}, {2, 4, z + 2 * r})}),
-         // Each pipe keeps a ring that stops before the spot where they touch.
-         "0 r from", "comes too near at one spot (0 r from another pipe)", false, true},
+         // The pipe along x keeps a ring on both sides of the spot where they touch; the other's
+        // stretch past it is under two diameters: it keeps one.
+         "0 r from", "comes too near at one spot (0 r from another pipe)", false, true, 4, 2, 0.55},
         {"tenth_of_r_from_a_face", block("0.1 r", {line({0, y, 4 - 1.1 * r}, {4, y, 4 - 1.1 * r})}),
          "0.1 r from face", "passes 0.01 from face", true},
         {"quarter_r_apart",
@@ -89,24 +107,23 @@ TEST_P(RingFallback, MeshesWithTetsWhereNoRingFitsAndKeepsTheOtherRing) {
     EXPECT_EQ(r.reached, Stage::Tets);
     EXPECT_GT(r.mesh.cell_count(CellKind::Tet), 0u);
 
-    // The far pipe keeps its ring at the St it has alone: the smallest diameter, uncut.
-    ASSERT_EQ(run.tubes, c.stops ? 3u : 1u);
-    if (c.stops) {
-        EXPECT_EQ(std::count_if(run.coverage.begin(), run.coverage.end(),
-                                [](const geom::RingCoverage& p) { return p.tube > 0 && p.share > 0 && p.share < 1; }),
-                  2);
-    }
+    // The far pipe keeps its ring at the default St: the smallest diameter of a ring, uncut.
+    ASSERT_EQ(run.tubes, c.rings);
+    EXPECT_EQ(std::count_if(run.coverage.begin(), run.coverage.end(),
+                            [&](const geom::RingCoverage& p) { return p.tube > 0 && p.share > c.share && p.share < 1; }),
+              c.stopped)
+        << ::testing::PrintToString(run.model_lines);
     EXPECT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
     EXPECT_GT(r.mesh.cell_count(CellKind::Pyramid), 0u);
     // (On a wall split where a ring stops the diameters measure a few ulps off.)
-    EXPECT_NEAR(run.sweep_size, 2 * kRadius, 1e-12);
+    EXPECT_NEAR(run.sweep_size, c.st, 1e-12);
 
     const auto ring = std::find_if(run.coverage.begin(), run.coverage.end(),
                                    [](const geom::RingCoverage& p) { return p.tube > 0 && p.length == 0; });
     ASSERT_NE(ring, run.coverage.end());
     EXPECT_EQ(ring->share, 1.0);
-    EXPECT_NEAR(ring->thinnest, 2 * kRadius, 1e-12);
-    EXPECT_NEAR(ring->thickest, 2 * kRadius, 1e-12);
+    EXPECT_NEAR(ring->thinnest, c.st, 1e-12);
+    EXPECT_NEAR(ring->thickest, c.st, 1e-12);
 
     // Every other pipe is named, without a ring, with a reason; the first to lose it with c.reason.
     int without = 0, named = 0;

@@ -94,7 +94,10 @@ void drop_branches(TubeSearch& tubes, std::vector<RingDrop>& dropped) {
     for (const TubeInfo& t : tubes.tubes) walls.insert(t.faces.begin(), t.faces.end());
     for (const RingDrop& d : dropped) walls.insert(d.faces.begin(), d.faces.end());
     for (auto t = tubes.tubes.begin(); t != tubes.tubes.end();) {
-        const int host = walls.count(t->hosts[0]) ? t->hosts[0] : walls.count(t->hosts[1]) ? t->hosts[1] : 0;
+        // A ring that stops ends on a cross-section, whatever face lies beyond it.
+        const int host = walls.count(t->hosts[0])               ? t->hosts[0]
+                         : !t->stop && walls.count(t->hosts[1]) ? t->hosts[1]
+                                                                : 0;
         if (host == 0) {
             ++t;
             continue;

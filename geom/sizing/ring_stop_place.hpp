@@ -1,11 +1,13 @@
 #pragma once
 // Where a pipe that has room for a ring along most of its length but not at one spot (a face or
 // another pipe too near there) stops its ring: on a cross-section a diameter before the first
-// place, seen from the end with the longer stretch of room, where the clearance leaves less room
-// than the caller asks for. The wall beyond gets tets (geom/tubes/ring_stop.hpp).
+// place, seen from an end, where the clearance leaves less room than the caller asks for. Each end
+// with a stretch worth a ring keeps one, so a spot in the middle leaves rings on both sides. The
+// wall between gets tets (geom/tubes/ring_stop.hpp).
 //
 // No OpenCASCADE header here.
 #include <optional>
+#include <vector>
 
 #include "engine/geometry/tube_data.hpp"
 #include "geom/tubes/tubes.hpp"
@@ -28,5 +30,19 @@ struct RingCut {
 // quads' pyramids little room, and the run's retry thins St then). nullopt
 // when no point is a spot, or neither end keeps kShortestStoppedRing diameters.
 std::optional<RingCut> ring_cut(const TubeInfo& tube, const std::vector<double>& clearance, double need);
+
+// Every end's cut: that of the longer stretch first (ring_cut's), then the other end's when its
+// stretch too is kShortestStoppedRing diameters or more; empty when ring_cut gives none.
+std::vector<RingCut> ring_cuts(const TubeInfo& tube, const std::vector<double>& clearance, double need);
+
+// Diameters between a ring's end and the wall of another pipe it would meet: at one diameter the
+// end quads' pyramids of a T-junction's branch found too little room in front of them.
+inline constexpr double kJunctionMargin = 2.0;
+
+// Where a tube whose end `end` (0: E1's, 1: E2's) lies on another pipe's wall (a T-junction's
+// branch) stops its ring: kJunctionMargin diameters before the first of `junction` (points of that end's loop)
+// along its centre line, seen from its other end; nullopt when the stretch left is under
+// kShortestStoppedRing diameters.
+std::optional<RingCut> cut_before_end(const TubeInfo& tube, int end, const std::vector<Vec3>& junction);
 
 }  // namespace tubemesh::geom

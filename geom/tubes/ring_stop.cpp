@@ -105,7 +105,10 @@ void stop_ring_at_edge(const Model& model, int edge_id_, TubeData& tube) {
         if (kept.count(id)) borders_kept = true;
         else if (walls.count(id)) beyond = id;
     }
-    if (!borders_kept || beyond == 0 || kept.size() == walls.size())
+    // A stretch that is a tube of its own (junction.hpp) ends on the edge already.
+    const bool ends_there = tube.loop2_edges == std::vector<index_t>{static_cast<index_t>(edge_id_)};
+    if (ends_there && beyond == 0 && kept.size() == walls.size()) beyond = tube.host2;
+    else if (!borders_kept || beyond == 0 || kept.size() == walls.size())
         throw Error(name + " does not split the tube's wall between its first end and the rest");
 
     // The edge's plane: its centre and the tangent there, from the stations.
@@ -236,6 +239,7 @@ TubeInfo stopped_tube(const Model& model, const TubeInfo& tube, int edge_id_, co
 
     TubeInfo::Stop stop;
     stop.edge = edge_id_;
+    stop.wall = t.faces;
     for (int f : t.faces)
         if (!kept.count(static_cast<index_t>(f))) stop.beyond.push_back(f);
     stop.loop = t.loops[1];
@@ -273,10 +277,12 @@ TubeInfo stopped_tube(const Model& model, const TubeInfo& tube, int edge_id_, co
 
 TubeInfo whole_tube(const TubeInfo& stopped) {
     TubeInfo t = stopped;
-    if (!stopped.stop) return t;
+    if (!stopped.stop || stopped.stop->stretch_only) {
+        t.stop.reset();
+        return t;
+    }
     const TubeInfo::Stop& s = *stopped.stop;
-    t.faces.insert(t.faces.end(), s.beyond.begin(), s.beyond.end());
-    std::sort(t.faces.begin(), t.faces.end());
+    t.faces = s.wall;
     t.loops[1] = s.loop;
     t.hosts[1] = s.host;
     t.loop_lengths[1] = s.loop_length;
@@ -284,6 +290,18 @@ TubeInfo whole_tube(const TubeInfo& stopped) {
     t.centre_line = s.centre_line;
     t.stop.reset();
     return t;
+}
+
+std::vector<Vec3> edge_points(const Model& model, const std::vector<int>& edges) {
+    std::vector<Vec3> out;
+    for (int e : edges) {
+        const TopoDS_Edge edge = edge_of(model, e);
+        if (BRep_Tool::Degenerated(edge)) continue;
+        const BRepAdaptor_Curve curve(edge);
+        for (int k = 0; k <= 16; ++k)
+            out.push_back(vec(curve.Value(curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * k / 16)));
+    }
+    return out;
 }
 
 std::vector<int> same_faces_in(const Model& from, const Model& to) {

@@ -40,6 +40,9 @@ TubeInfo stopped_tube(const Model& model, const TubeInfo& tube, int edge, const 
 // The whole tube of a stopped one, its ring's end first: what discretize follows the wall on.
 TubeInfo whole_tube(const TubeInfo& stopped);
 
+// Points along the edges `edges`, at 17 evenly spaced parameters each: where a loop lies.
+std::vector<Vec3> edge_points(const Model& model, const std::vector<int>& edges);
+
 // Per face id of `from` (element id - 1), the id of the same face in `to`; 0 where `to` has it
 // no more (a face split_wall cut).
 std::vector<int> same_faces_in(const Model& from, const Model& to);

@@ -39,6 +39,17 @@ TubeInfo describe(const TubeCandidate& c, const TubeAxis& axis) {
 
 }  // namespace
 
+std::optional<TubeInfo> candidate_tube(const TopologyIndex& index, const TubeCandidate& candidate, std::string& why) {
+    const auto wall = TubeWall::build(index, candidate, TubeOptions{}, why);
+    if (!wall) return std::nullopt;
+    const auto axis = TubeAxis::build(*wall, kGeneratorStartFraction);
+    if (!axis) {
+        why = "no generator line of the wall leads from one loop to the other";
+        return std::nullopt;
+    }
+    return describe(candidate, *axis);
+}
+
 TubeSearch find_tubes(const Model& model, const TubeOptions& options) {
     const TopologyIndex index(model);
     CandidateSearch found = find_tube_candidates(index, options);

@@ -47,16 +47,22 @@ struct TubeInfo {
     // Set when the ring stops on a cross-section inside the solid (geom/tubes/ring_stop.hpp):
     // `faces`, loops[1], hosts[1] and centre_line are then the stretch under the ring, up to the
     // closed edge loops[1] = {edge}; the wall beyond (`beyond`, ending on `loop` of `host`) is
-    // meshed with triangles and tets.
+    // meshed with triangles and tets. A pipe with a spot in the middle keeps a ring on each side:
+    // two tubes, each beyond its own cut; `beyond` is then the wall between the cuts only.
     struct Stop {
         int edge = 0;
         std::vector<int> beyond;  // ascending
+        std::vector<int> wall;    // the whole pipe's wall faces, ascending
         std::vector<int> loop;
         int host = 0;
         double loop_length = 0;
         double length = 0;  // of the whole centre line
         std::vector<Vec3> centre_line;  // the whole one
         std::string reason;  // why: the spot beyond, for the reports
+        // The wall meets another pipe's beyond the cut (geom/tubes/junction.hpp): no whole tube
+        // runs on, so `wall`, `length` and `centre_line` are the pipe's and the stretch is
+        // discretised as it is.
+        bool stretch_only = false;
     };
     std::optional<Stop> stop;
 };

@@ -231,8 +231,13 @@ TubeCandidate candidate_of(const TopologyIndex& index, const TubeInfo& tube) {
         for (std::size_t w = 0; w < wires.size() && c.loops[k].edges.empty(); ++w)
             for (const LoopEdge& e : wires[w].edges)
                 if (e.edge == tube.loops[k].front()) {
-                    c.loops[k] = {host, static_cast<int>(w), wires[w].edges, 0.0};
+                    // A stretch of wall ends on a cut, one edge of the face beyond's wire.
+                    std::vector<LoopEdge> edges;
                     for (const LoopEdge& le : wires[w].edges)
+                        if (std::find(tube.loops[k].begin(), tube.loops[k].end(), le.edge) != tube.loops[k].end())
+                            edges.push_back(le);
+                    c.loops[k] = {host, static_cast<int>(w), edges, 0.0};
+                    for (const LoopEdge& le : edges)
                         if (!index.degenerate[le.edge]) c.loops[k].length += index.edge_length[le.edge];
                     break;
                 }

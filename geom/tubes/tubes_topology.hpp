@@ -3,6 +3,8 @@
 // is exactly two hole loops of other faces, short enough for the length rule. The geometric
 // half (does the group close smoothly around an axis?) is in tubes_wall.hpp.
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "geom/model/model.hpp"
@@ -54,6 +56,10 @@ struct CandidateSearch {
 // Every group reached from some hole loop, accepted or with the rule it broke. A group seen
 // from both of its loops is reported once.
 CandidateSearch find_tube_candidates(const TopologyIndex& index, const TubeOptions& options);
+
+// The candidate as a tube, or nullopt with the reason in `why` when its faces do not close
+// smoothly around an axis from one loop to the other (find_tubes' geometric rules).
+std::optional<TubeInfo> candidate_tube(const TopologyIndex& index, const TubeCandidate& candidate, std::string& why);
 
 // The candidate a recognised tube came from, rebuilt from its ids (for discretisation, which
 // gets TubeInfo, not candidates). Throws tubemesh::Error when the ids do not fit the model.

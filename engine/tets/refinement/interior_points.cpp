@@ -370,12 +370,31 @@ GrowingPoints::~GrowingPoints() = default;
 void GrowingPoints::append(std::span<const double> xyz) { impl_->all.insert(impl_->all.end(), xyz.begin(), xyz.end()); }
 std::size_t GrowingPoints::size() const { return impl_->all.size() / 3; }
 
-std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor) {
+std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor,
+                                   const MeshView* mesh) {
     GrowingPoints points(existing);
-    return select_points(c, points, factor);
+    return select_points(c, points, factor, mesh);
 }
 
-std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor) {
+namespace {
+
+// A corner of the candidate's holding tet within its radius, by a margin that the trees'
+// rounding of the same squared distance cannot cross.
+bool corner_within(const MeshView& m, const Candidate& c, double radius) {
+    const double limit = radius * radius * (1 - 1e-9);
+    const index_t* v = m.tets.vertex(c.tet);
+    for (int k = 0; k < 4; ++k) {
+        const double* q = ptr(m, v[k]);
+        const double dx = c.p[0] - q[0], dy = c.p[1] - q[1], dz = c.p[2] - q[2];
+        if (dx * dx + dy * dy + dz * dz < limit) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor,
+                                   const MeshView* mesh) {
     const std::size_t n = c.size();
     std::vector<double> cx(n), cy(n), cz(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -390,8 +409,10 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     // Far enough from existing points: independent per candidate, parallel.
     std::vector<std::uint8_t> free_of_points(n, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i)
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            if (mesh && corner_within(*mesh, c[i], factor * c[i].h)) continue;
             free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h) ? 1 : 0;
+        }
     });
     // Among candidates: greedy in order, so earlier ones win whatever the thread count. Only the
     // candidates that passed the first test can take a place or block a later one, so the tree

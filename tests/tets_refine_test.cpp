@@ -501,7 +501,8 @@ TEST(RefineSizeTest, TooBigComparesTheMeanEdgeWithTheCornersSize) {
 
 // Rounds of refinement by hand through the kernel: with the memos, each round's active faces
 // and candidates are exactly those computed from scratch, while unchanged tets are not tested
-// again and unchanged active faces reuse their ideal points.
+// again and unchanged active faces reuse their ideal points; the selection that looks at the
+// holding tets' corners first keeps the same candidates.
 TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
     TetDomain d = l_domain();
     const ControlSpace cs(d);
@@ -532,6 +533,7 @@ TEST(RefineMemo, ReusedAnswersMatchFreshOnes) {
         }
         // Insert every other kept candidate, so that some active faces stay as they were.
         const std::vector<index_t> keep = select_points(got, xyz, 0.7);
+        EXPECT_EQ(select_points(got, xyz, 0.7, &view), keep) << "round " << round << ": holding tets' corners first";
         std::vector<double> add;
         std::vector<index_t> ids;
         for (std::size_t k = 0; k < keep.size(); k += 2) {

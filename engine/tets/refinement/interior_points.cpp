@@ -178,6 +178,11 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
     std::vector<Candidate> out(faces.size());
     std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
     const double far = space.far_size();
+    // Ideal points that snap to a lattice node if the node passes far_and_clear: the node, and
+    // the faces' positions in `faces`. Several faces of a round propose the same node, and the
+    // answer depends on the node only, so each distinct node is asked once (below).
+    std::vector<Vec3> node_of(faces.size());
+    std::vector<std::uint8_t> at_node(faces.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::uint64_t reused = 0;
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
@@ -218,19 +223,49 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                 // The test at the node needs a query of the front's nodes: only ideal points
                 // already at the far size ask it.
                 if (lattice.spacing > 0 && h_mid >= far) {
-                    const Vec3 node = nearest_bcc_node(p, lattice.spacing * far);
-                    const double nq[3] = {node.x, node.y, node.z};
-                    if (space.far_and_clear(nq, lattice.clearance * far)) {
-                        p = jittered(node, lattice.spacing * far);
-                        e.h = far;
-                    }
+                    node_of[i] = nearest_bcc_node(p, lattice.spacing * far);
+                    at_node[i] = 1;
                 }
                 e.p[0] = p.x;
                 e.p[1] = p.y;
                 e.p[2] = p.z;
             }
             known[i] = 1;
-            const index_t holder = walk_to(m, t, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
+        }
+        memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
+    });
+    std::vector<index_t> asking;
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        if (at_node[i]) asking.push_back(static_cast<index_t>(i));
+    const auto node_less = [&](index_t i, index_t j) {
+        const Vec3 &a = node_of[i], &b = node_of[j];
+        return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+    };
+    std::sort(asking.begin(), asking.end(), node_less);
+    std::vector<std::size_t> run_begin;  // runs of equal nodes in `asking`
+    for (std::size_t k = 0; k < asking.size(); ++k)
+        if (k == 0 || node_less(asking[k - 1], asking[k])) run_begin.push_back(k);
+    run_begin.push_back(asking.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, run_begin.size() - 1, 64), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+            const Vec3 node = node_of[asking[run_begin[k]]];
+            const double nq[3] = {node.x, node.y, node.z};
+            if (!space.far_and_clear(nq, lattice.clearance * far)) continue;
+            const Vec3 p = jittered(node, lattice.spacing * far);
+            for (std::size_t j = run_begin[k]; j < run_begin[k + 1]; ++j) {
+                ProposalMemo::Entry& e = now[asking[j]];
+                e.p[0] = p.x;
+                e.p[1] = p.y;
+                e.p[2] = p.z;
+                e.h = far;
+            }
+        }
+    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            if (!known[i]) continue;
+            const ProposalMemo::Entry& e = now[i];
+            const index_t holder = walk_to(m, faces[i] >> 2, e.p, static_cast<std::uint32_t>(faces[i]) * 2654435761u | 1u);
             if (holder == kNoIndex) continue;
             // h at the point from the corners of the tet that holds it, its nearest mesh points.
             const CarriedSize h = std::isnan(e.h) ? carried_size(m, m.tets.vertex(holder), e.p, space)
@@ -238,7 +273,6 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             out[i] = {{e.p[0], e.p[1], e.p[2]}, h.h, holder, h.source};
             ok[i] = 1;
         }
-        memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
     });
     // Faces come in increasing order, so the entries stay sorted for the next round's search.
     std::vector<ProposalMemo::Entry> entries;
@@ -370,12 +404,31 @@ GrowingPoints::~GrowingPoints() = default;
 void GrowingPoints::append(std::span<const double> xyz) { impl_->all.insert(impl_->all.end(), xyz.begin(), xyz.end()); }
 std::size_t GrowingPoints::size() const { return impl_->all.size() / 3; }
 
-std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor) {
+std::vector<index_t> select_points(std::span<const Candidate> c, std::span<const double> existing, double factor,
+                                   const MeshView* mesh) {
     GrowingPoints points(existing);
-    return select_points(c, points, factor);
+    return select_points(c, points, factor, mesh);
 }
 
-std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor) {
+namespace {
+
+// A corner of the candidate's holding tet within its radius, by a margin that the trees'
+// rounding of the same squared distance cannot cross.
+bool corner_within(const MeshView& m, const Candidate& c, double radius) {
+    const double limit = radius * radius * (1 - 1e-9);
+    const index_t* v = m.tets.vertex(c.tet);
+    for (int k = 0; k < 4; ++k) {
+        const double* q = ptr(m, v[k]);
+        const double dx = c.p[0] - q[0], dy = c.p[1] - q[1], dz = c.p[2] - q[2];
+        if (dx * dx + dy * dy + dz * dz < limit) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor,
+                                   const MeshView* mesh) {
     const std::size_t n = c.size();
     std::vector<double> cx(n), cy(n), cz(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -390,8 +443,10 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     // Far enough from existing points: independent per candidate, parallel.
     std::vector<std::uint8_t> free_of_points(n, 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i)
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            if (mesh && corner_within(*mesh, c[i], factor * c[i].h)) continue;
             free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h) ? 1 : 0;
+        }
     });
     // Among candidates: greedy in order, so earlier ones win whatever the thread count. Only the
     // candidates that passed the first test can take a place or block a later one, so the tree

@@ -140,17 +140,20 @@ public:
 
 private:
     struct Impl;
-    friend std::vector<index_t> select_points(std::span<const Candidate>, GrowingPoints&, double);
+    friend std::vector<index_t> select_points(std::span<const Candidate>, GrowingPoints&, double, const MeshView*);
     std::unique_ptr<Impl> impl_;
 };
 
 // Keeps the candidates farther than `reject_factor` * h from every point in `existing`
 // and from every candidate kept before them (greedy in order, so the result does not depend
 // on the thread count). Returns the kept positions in `candidates`.
+// With `mesh`, whose tets' corners must all be in `existing`: a candidate with a corner of its
+// holding tet (Candidate::tet) clearly within its radius is dropped without a tree query (most
+// are: the same answers, for about half the queries' cost).
 std::vector<index_t> select_points(std::span<const Candidate> candidates, GrowingPoints& existing,
-                                   double reject_factor);
+                                   double reject_factor, const MeshView* mesh = nullptr);
 // The same for points given as 3 coordinates each.
 std::vector<index_t> select_points(std::span<const Candidate> candidates, std::span<const double> existing,
-                                   double reject_factor);
+                                   double reject_factor, const MeshView* mesh = nullptr);
 
 }  // namespace tubemesh::tets

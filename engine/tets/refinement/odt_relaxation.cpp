@@ -75,7 +75,10 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 }
 
 // Inserts the free points of `dom` again into a copy of the recovered mesh and makes the result
-// dom's tets. Each walk starts from the previous insertion. A walk that runs into the front (a
+// dom's tets. The points go in BRIO rounds (insertion_order.hpp), each along the Hilbert curve,
+// each walk from the previous insertion: in curve order alone every point's cavity took in again
+// the long tets that the points before it had joined to the far front (about 46 tets made per
+// point on the serpentine lift, 38 with rounds). A walk that runs into the front (a
 // concave part of it) gets the point blocked; those points get one more walk once the others
 // are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
 // so the way between them is short and inside the region. Points that fail that too (none on
@@ -94,20 +97,29 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts,
     // neighbour rows would only add to the peak while the new mesh is built.
     const std::vector<index_t> old_rows(dom.tets.vertices().begin(), dom.tets.vertices().end());
     dom.tets = delaunay::TetStore();
-    std::vector<double> used_xyz(3 * used.size());
-    for (std::size_t i = 0; i < used.size(); ++i) std::copy_n(dom.point(used[i]), 3, used_xyz.begin() + 3 * i);
-    std::vector<index_t> order = delaunay::curve_order(used_xyz);
-    used_xyz = {};
+    delaunay::InsertionOrder order;
+    {
+        std::vector<double> x(used.size()), y(used.size()), z(used.size());
+        for (std::size_t i = 0; i < used.size(); ++i) {
+            const double* q = dom.point(used[i]);
+            x[i] = q[0];
+            y[i] = q[1];
+            z[i] = q[2];
+        }
+        order = delaunay::brio_hilbert_order(x, y, z);
+    }
     // The kernel holds every point (kernel id = domain id; the free ones not in a tet yet, the
     // unused ones never inserted) and the recovered tets while it inserts.
     delaunay::Triangulation tri;
     tri.set_pulse(pulse);
     tri.adopt(std::move(dom.xyz), recovered.tets.clone());
     dom.xyz.clear();
-    for (index_t& k : order) k = used[k];
+    for (index_t& k : order.order) k = used[k];
     tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
     constexpr index_t kMinPointsPerPart = 64;
-    tri.insert(order, parts, kMinPointsPerPart);
+    const std::span<const index_t> all(order.order);
+    for (std::size_t r = 0; r + 1 < order.round_begin.size(); ++r)
+        tri.insert(all.subspan(order.round_begin[r], order.round_begin[r + 1] - order.round_begin[r]), parts, kMinPointsPerPart);
     const std::vector<index_t> blocked = tri.blocked();
     if (!blocked.empty()) {
         std::vector<std::uint8_t> is_blocked(n, 0);

@@ -47,7 +47,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             std::vector<Candidate> cand = propose_points(view, faces, space, proposals, lattice);
             beat(pulse);
             stats.candidates += cand.size();
-            const std::vector<index_t> keep = select_points(cand, live, options.reject_factor);
+            const std::vector<index_t> keep = select_points(cand, live, options.reject_factor, &view);
             beat(pulse);
             stats.rejected_close += cand.size() - keep.size();
             if (keep.empty()) break;

@@ -94,6 +94,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     const std::span<const double> kSteps(kStepsAll, now.worst < kPolishBelow ? 5 : 3);
 
     double best = now.worst + min_gain;
+    double best_worst = 0;  // the collapse of the worst tet at best_x
     Vec3 best_x = here;
     bool improved = false;
     // A pyramid apex keeps every pyramid it tops at apex_floor or better.
@@ -125,7 +126,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
                 const Vec3 x = here + step * (target - here);
                 const double q = star_quality(corners, x, best).worst;
                 if (q > best && allowed(x)) {
-                    best = q;
+                    best = best_worst = q;
                     best_x = x;
                     improved = true;
                 }
@@ -141,6 +142,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
             const StarQuality q = star_quality(corners, x, give_up);
             if (!(q.worst >= keep_above && q.sum > best_sum && allowed(x))) return false;
             best_sum = q.sum;
+            best_worst = q.worst;
             best_x = x;
             improved = true;
             return true;
@@ -164,7 +166,11 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     }
     // Rounding must not let a sliding point creep off its plane.
     if (improved && slides) best_x = best_x - (dot(normal, best_x) - dom.slide_offset[dom.slide_rank[p]]) * normal;
-    if (!improved || !none_inverted(dom, p, star, best_x)) return false;
+    // A tet whose computed collapse is this far above 0 is positive beyond any rounding (its
+    // volume term is then about 1e-3 of its edges' scale, rounding errors 1e-16 of it): the
+    // exact orientation test is left to the stars that come near 0.
+    constexpr double kSurelyPositive = 1e-3;
+    if (!improved || (best_worst < kSurelyPositive && !none_inverted(dom, p, star, best_x))) return false;
     double* c = dom.xyz.data() + std::size_t{3} * p;
     c[0] = best_x.x;
     c[1] = best_x.y;

@@ -31,10 +31,10 @@ struct SmoothingCounts {
     std::uint64_t colours = 0;  // colours of the point colouring
 };
 
-// Which moves a fair star (worst tet at or above the floor, above 0.35) tries for its sum of
-// collapses: along its ascent, then towards its ODT position and its centroid (All), or along its
-// ascent alone (AscentForFair: later passes, where the ascent wins nearly every move, for less
-// than half the trials and neither target's cost). Poor stars always try every target.
+// Which moves a fair star (worst tet at or above 0.5) tries for its sum of collapses: along its
+// ascent, then towards its ODT position and its centroid (All), or along its ascent alone
+// (AscentForFair: later passes, where the ascent wins nearly every move, for less than half the
+// trials and neither target's cost). Stars with a tet below 0.5 always try every target.
 enum class SmoothingTargets { All, AscentForFair };
 
 // `sweeps` sweeps over the free points whose worst tet is below `threshold`; a move must raise

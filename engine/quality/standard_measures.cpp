@@ -34,15 +34,18 @@ double tet_min_dihedral_degrees(const std::array<Vec3, 4>& p) {
     const Vec3 n2 = cross(p[1] - p[0], p[3] - p[0]);  // face 0-1-3
     const Vec3 n3 = cross(p[2] - p[0], p[1] - p[0]);  // face 0-2-1
     const std::array<Vec3, 4> n{n0, n1, n2, n3};
+    // acos(-c) rises with c (and acos is correctly rounded, so monotone in doubles too): the
+    // smallest angle is that of the smallest cosine, one acos instead of six.
     double smallest = kInfinity;
     for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) {
             const double lengths = std::sqrt(norm2(n[i]) * norm2(n[j]));
             if (!(lengths > 0)) return 0.0;
-            const double c = std::clamp(dot(n[i], n[j]) / lengths, -1.0, 1.0);
-            smallest = std::min(smallest, std::acos(-c));
+            smallest = std::min(smallest, std::clamp(dot(n[i], n[j]) / lengths, -1.0, 1.0));
         }
-    return smallest * kDegreesPerRadian;
+    // No pair with a cosine (all NaN): the angle stays unknown, as infinity.
+    if (!(smallest < kInfinity)) return kInfinity;
+    return std::acos(-smallest) * kDegreesPerRadian;
 }
 
 double tet_aspect_ratio(const std::array<Vec3, 4>& p) {

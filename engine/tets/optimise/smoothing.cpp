@@ -34,6 +34,11 @@ namespace {
 // Points whose worst tet is below this get finer steps and extra sweeps (polish): the few
 // worst tets of the mesh decide its minimum, the bulk only the mean.
 constexpr double kPolishBelow = 0.35;
+// In an ascent-only sweep (SmoothingTargets::AscentForFair) the stars whose worst tet is below
+// this (the flips' threshold) still try every target: with only the poor stars (below the
+// floor) trying them, a sphere of tets kept a worst tet at 0.257 that no flip, move or new
+// point lifted (tests/tets_optimise_test.cpp, RescueInsertsPointsWhereNoFlipLifts, bar 0.275).
+constexpr double kAscentOnlyFrom = 0.5;
 
 // Per-thread scratch of try_move: the star (old worst tet first) and its tets' collapses.
 struct StarScratch {
@@ -42,9 +47,10 @@ struct StarScratch {
     StarCorners corners;
 };
 
-// `tet_collapse_now`: the collapse of every tet, updated for p's star when p moves.
+// `tet_collapse_now`: the collapse of every tet, updated for p's star when p moves. `ascent_only`:
+// a fair star tries the ascent of its sum alone (see SmoothingTargets).
 bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, double threshold, double min_gain,
-              double floor, StarScratch& scratch, double& worst_before, bool polish,
+              double floor, StarScratch& scratch, double& worst_before, bool polish, bool ascent_only,
               std::vector<double>& tet_collapse_now) {
     StarQuality now;
     std::size_t worst_at = 0;
@@ -77,28 +83,23 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     const Vec3 normal = slides ? dom.slide_normal[dom.slide_rank[p]] : Vec3{};
     const auto in_plane = [&](const Vec3& d) { return slides ? d - dot(d, normal) * normal : d; };
     const auto aim = [&](const Vec3& target) { return slides ? here + in_plane(target - here) : target; };
-    const Vec3 centroid = aim(star_centroid(corners));
     double reach = 0;
     for (std::size_t k = 0; k < star.size(); ++k)
         for (int i = 0; i < 4; ++i)
             if (i != corners.at[k]) reach += norm(corners.corners[k][i] - here);
     reach /= 3.0 * static_cast<double>(star.size());
-    const Vec3 odt = aim(odt_target(corners, centroid));
-    // In a polish sweep a poor star also aims at the regular apices of its other poor tets (up
-    // to 4): the worst one's apex alone often only trades it for the next.
-    std::array<Vec3, 7> target_store{centroid, odt, aim(regular_apex(dom, worst_tet, p))};
-    std::size_t target_count = 3;
-    if (polish && now.worst < kPolishBelow)
-        for (std::size_t k = 1; k < star.size() && target_count < target_store.size(); ++k) {
-            if (collapse[k] < kPolishBelow)
-                target_store[target_count++] = aim(regular_apex(dom, star[k], p));
-        }
-    const std::span<const Vec3> targets(target_store.data(), target_count);
+    // The centroid and ODT targets only when a trial reads them (a fair star in an ascent-only
+    // sweep does not).
+    const bool poor = now.worst < floor;
+    const bool other_targets = !ascent_only || now.worst < kAscentOnlyFrom;
+    const Vec3 centroid = other_targets ? aim(star_centroid(corners)) : here;
+    const Vec3 odt = other_targets ? aim(odt_target(corners, centroid)) : here;
     // Steps of 1/8 and 1/16 rarely win for a fair star and cost more trials; a poor star gets them.
     constexpr double kStepsAll[] = {1.0, 0.5, 0.25, 0.125, 0.0625};
     const std::span<const double> kSteps(kStepsAll, now.worst < kPolishBelow ? 5 : 3);
 
     double best = now.worst + min_gain;
+    double best_worst = 0;  // the collapse of the worst tet at best_x
     Vec3 best_x = here;
     bool improved = false;
     // A pyramid apex keeps every pyramid it tops at apex_floor or better.
@@ -114,46 +115,67 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
         }
         return true;
     };
-    if (now.worst < floor)
+    if (poor) {
+        // In a polish sweep a poor star also aims at the regular apices of its other poor tets
+        // (up to 4): the worst one's apex alone often only trades it for the next.
+        std::array<Vec3, 7> target_store{centroid, odt, aim(regular_apex(dom, worst_tet, p))};
+        std::size_t target_count = 3;
+        if (polish && now.worst < kPolishBelow)
+            for (std::size_t k = 1; k < star.size() && target_count < target_store.size(); ++k) {
+                if (collapse[k] < kPolishBelow)
+                    target_store[target_count++] = aim(regular_apex(dom, star[k], p));
+            }
+        const std::span<const Vec3> targets(target_store.data(), target_count);
         for (const Vec3& target : targets)
             for (double step : kSteps) {
                 const Vec3 x = here + step * (target - here);
                 const double q = star_quality(corners, x, best).worst;
                 if (q > best && allowed(x)) {
-                    best = q;
+                    best = best_worst = q;
                     best_x = x;
                     improved = true;
                 }
             }
+    }
     if (!improved) {
         double best_sum = now.sum + min_gain * static_cast<double>(star.size());
         const double keep_above = std::min(now.worst, floor);
         const double give_up = std::nextafter(keep_above, -1.0);
         // Mean-raising moves of a fair star: the two longer steps (the short one seldom wins).
         const std::span<const double> sum_steps = now.worst < kPolishBelow ? kSteps : kSteps.first(2);
+        const auto trial = [&](const Vec3& x) {
+            const StarQuality q = star_quality(corners, x, give_up);
+            if (!(q.worst >= keep_above && q.sum > best_sum && allowed(x))) return false;
+            best_sum = q.sum;
+            best_worst = q.worst;
+            best_x = x;
+            improved = true;
+            return true;
+        };
         // Along the ascent of the sum: the target lies 0.4 of the star's mean edge from p, and
-        // the four trials go 1/2 to 1/16 of the way there (0.2 down to 0.025 of the edge): the
-        // short steps win most often (bench/results/tuning-notes.md).
-        constexpr double kUphillSteps[] = {0.5, 0.25, 0.125, 0.0625};
+        // the trials go 1/16, 1/8, 1/4, 1/2 of the way there (0.025 up to 0.2 of the edge) while
+        // each beats the one before: the short steps win most often, and on a sum that rises
+        // and then falls along the line the first step that does not beat the last ends the
+        // search with the same winner as trying all four (bench/results/tuning-notes.md).
+        constexpr double kUphillSteps[] = {0.0625, 0.125, 0.25, 0.5};
         const Vec3 g = in_plane(ascent_direction(corners, collapse));
         const double glen = norm(g);
-        const Vec3 uphill = glen > 0 ? here + (0.4 * reach / glen) * g : here;
-        for (int k = 0; k < 3; ++k) {
-            const Vec3 target = k == 0 ? uphill : k == 1 ? odt : centroid;
-            for (double step : k == 0 ? std::span<const double>(kUphillSteps) : sum_steps) {
-                const Vec3 x = here + step * (target - here);
-                const StarQuality q = star_quality(corners, x, give_up);
-                if (q.worst >= keep_above && q.sum > best_sum && allowed(x)) {
-                    best_sum = q.sum;
-                    best_x = x;
-                    improved = true;
-                }
-            }
+        if (glen > 0) {
+            const Vec3 uphill = here + (0.4 * reach / glen) * g;
+            for (double step : kUphillSteps)
+                if (!trial(here + step * (uphill - here))) break;
         }
+        if (other_targets)
+            for (const Vec3& target : {odt, centroid})
+                for (double step : sum_steps) trial(here + step * (target - here));
     }
     // Rounding must not let a sliding point creep off its plane.
     if (improved && slides) best_x = best_x - (dot(normal, best_x) - dom.slide_offset[dom.slide_rank[p]]) * normal;
-    if (!improved || !none_inverted(dom, p, star, best_x)) return false;
+    // A tet whose computed collapse is this far above 0 is positive beyond any rounding (its
+    // volume term is then about 1e-3 of its edges' scale, rounding errors 1e-16 of it): the
+    // exact orientation test is left to the stars that come near 0.
+    constexpr double kSurelyPositive = 1e-3;
+    if (!improved || (best_worst < kSurelyPositive && !none_inverted(dom, p, star, best_x))) return false;
     double* c = dom.xyz.data() + std::size_t{3} * p;
     c[0] = best_x.x;
     c[1] = best_x.y;
@@ -177,7 +199,7 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
 
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
-                              std::vector<double>& collapses, const Pulse& pulse) {
+                              std::vector<double>& collapses, SmoothingTargets targets, const Pulse& pulse) {
     SmoothingCounts counts;
     const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
@@ -206,7 +228,7 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
                 auto& scratch = star_scratch.local();
                 for (std::size_t i = r.begin(); i != r.end(); ++i)
                     moved[i] = try_move(dom, pts[i], inc.of(pts[i]), below, min_gain, floor, scratch, worst[i], polish,
-                                        collapses);
+                                        targets == SmoothingTargets::AscentForFair, collapses);
             };
             // A small colour (most of the polish sweeps' and focused passes') runs on this
             // thread: a parallel job for a few points costs more than it saves, much more on

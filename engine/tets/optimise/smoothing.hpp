@@ -31,6 +31,12 @@ struct SmoothingCounts {
     std::uint64_t colours = 0;  // colours of the point colouring
 };
 
+// Which moves a fair star (worst tet at or above 0.5) tries for its sum of collapses: along its
+// ascent, then towards its ODT position and its centroid (All), or along its ascent alone
+// (AscentForFair: later passes, where the ascent wins nearly every move, for less than half the
+// trials and neither target's cost). Stars with a tet below 0.5 always try every target.
+enum class SmoothingTargets { All, AscentForFair };
+
 // `sweeps` sweeps over the free points whose worst tet is below `threshold`; a move must raise
 // the worst collapse around the point by more than min_gain, or the sum of the collapses around
 // it by more than min_gain per tet (`floor` as above). The first sweep tries the points with
@@ -42,6 +48,7 @@ struct SmoothingCounts {
 // of every tet (collapse_of over its vertex row), read instead of computed and kept up to date.
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
-                              std::vector<double>& collapses, const Pulse& pulse = {});
+                              std::vector<double>& collapses, SmoothingTargets targets = SmoothingTargets::All,
+                              const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

@@ -244,8 +244,14 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
         o.drop = drops_on_split(model, *split, splits, options.drop);
         // The drop's face ids are this model's, not the split's: the reason names none.
         const std::string how_near = drop.reason.substr(0, drop.reason.find(" from "));
+        // The face the clearance was measured to may be another pipe's wall: where pipes touch,
+        // the wall beyond the spot of the one that stopped first.
+        const bool pipe_wall = std::any_of(tubes.tubes.begin(), tubes.tubes.end(), [&](const TubeInfo& u) {
+            const auto has = [&](const std::vector<int>& f) { return std::binary_search(f.begin(), f.end(), plan.dcb_face); };
+            return has(u.faces) || (u.stop && has(u.stop->beyond));
+        });
         o.stops.push_back({cut->centre, cut->keep, tube.radius_max,
-                           fmt::format("{} from {}", how_near, near_pipe ? "another pipe" : "a face")});
+                           fmt::format("{} from {}", how_near, near_pipe || pipe_wall ? "another pipe" : "a face")});
         PreparedModel p = prepare_unguarded(*split, o);
         // Every ring stopped so far still stops (none dropped after all), or this split is no use.
         if (std::count_if(p.tubes.tubes.begin(), p.tubes.tubes.end(), [](const TubeInfo& x) { return x.stop.has_value(); }) <

@@ -95,6 +95,17 @@ TEST_P(RingFallback, MeshesWithTetsWhereNoRingFitsAndKeepsTheOtherRing) {
         EXPECT_EQ(std::count_if(run.coverage.begin(), run.coverage.end(),
                                 [](const geom::RingCoverage& p) { return p.tube > 0 && p.share > 0 && p.share < 1; }),
                   2);
+        // Each names what it stops before: the other pipe, whichever stopped first.
+        for (const std::string& w : r.warnings) {
+            if (w.find("comes too near at one spot") != std::string::npos) {
+                EXPECT_NE(w.find(c.warning), std::string::npos) << w;
+            }
+        }
+        for (const geom::RingCoverage& p : run.coverage) {
+            if (p.tube > 0 && p.share < 1) {
+                EXPECT_NE(p.reason.find("from another pipe"), std::string::npos) << p.reason;
+            }
+        }
     }
     EXPECT_GT(r.mesh.cell_count(CellKind::Hex), 0u);
     EXPECT_GT(r.mesh.cell_count(CellKind::Pyramid), 0u);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <span>
 #include <utility>
 #include <vector>
 

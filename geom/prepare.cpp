@@ -363,8 +363,15 @@ std::optional<PreparedModel> stop_before_spot(const Model& model, const TubeSear
     if (options.stops.size() + cuts.size() > kMostRingStops) cuts.resize(1);
     // The drop's face ids are this model's, not the split's: the reason names none.
     const std::string how_near = drop.reason.substr(0, drop.reason.find(" from "));
+    // The face the clearance was measured to may be another pipe's wall: where pipes touch, the
+    // wall beyond the spot of the one that stopped first.
+    const bool pipe_wall = std::any_of(tubes.tubes.begin(), tubes.tubes.end(), [&](const TubeInfo& u) {
+        const auto has = [&](const std::vector<int>& f) { return std::binary_search(f.begin(), f.end(), plan.dcb_face); };
+        return has(u.faces) || (u.stop && has(u.stop->beyond));
+    });
     return split_and_prepare(model, tube.faces, cuts, std::vector<double>(cuts.size(), tube.radius_max),
-                             fmt::format("{} from {}", how_near, near_pipe ? "another pipe" : "a face"), options);
+                             fmt::format("{} from {}", how_near, near_pipe || pipe_wall ? "another pipe" : "a face"),
+                             options);
 }
 
 // The pipe wall `walls` split at each of `cuts` (of a pipe of radius radii[i]), each stretch it

@@ -1,4 +1,4 @@
-// Whole runs on many generated blocks (heavy): random blocks 1-500 and blocks with pipes
+// Whole runs on many generated blocks (heavy): random blocks 1-1000 and blocks with pipes
 // deliberately close to each other and to a face (close_block.hpp, seeds 1-200) mesh and pass
 // the check; a pipe no ring fits is meshed with tets (geometry_diagnosis.hpp). A close block whose
 // boundary touches itself along a line (a pipe tangent to a face or to the other pipe) has no
@@ -42,7 +42,7 @@ class RandomBlocks : public ::testing::TestWithParam<int> {};
 TEST_P(RandomBlocks, MeshAndPassTheCheck) {
     mesh_and_check(geom::random_block_spec(static_cast<std::uint64_t>(GetParam())), false);
 }
-INSTANTIATE_TEST_SUITE_P(Seeds, RandomBlocks, ::testing::Range(1, 501), seed_name);
+INSTANTIATE_TEST_SUITE_P(Seeds, RandomBlocks, ::testing::Range(1, 1001), seed_name);
 
 class CloseBlocks : public ::testing::TestWithParam<int> {};
 TEST_P(CloseBlocks, MeshAndPassTheCheckOrTouchThemselves) {

@@ -66,7 +66,8 @@ struct PyramidInput {
 struct PyramidOptions {
     // Ideal apex height over the front's centroid, times the mean edge length h (paper 4.1).
     double height_factor = 0.98154;
-    // Existing nodes closer than this times h to the ideal apex are candidates (§4 Step 3).
+    // Existing nodes closer than this times h to the ideal apex are candidates (§4 Step 3); over
+    // a thin ring (front_scale) times its share of h, and at most the 32 nearest.
     double search_radius_factor = 1.5;
     // Largest angle between MN and the front normal n (§4 Step 4).
     double max_angle_degrees = 45.0;

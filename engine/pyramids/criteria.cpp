@@ -118,13 +118,10 @@ struct ApexFan {
 
 void collect_fan(index_t apex, const Visible& vis, ApexFan& fan) {
     if (apex == kNoIndex) return;
-    for (const VisibleFace& face : vis.faces) {
-        if (!face.has(apex)) continue;
-        for (int k = 0; k < face.size; ++k) {
-            if (fan.count == kFanEdges) return;
+    vis.for_each_face_of(apex, [&](const VisibleFace& face) {
+        for (int k = 0; k < face.size && fan.count < kFanEdges; ++k)
             fan.key[fan.count++] = edge_key(face.node[k], face.node[(k + 1) % face.size]);
-        }
-    }
+    });
 }
 
 // The boxes of the lateral edges (corner k to the apex), each inside the pyramid's box.

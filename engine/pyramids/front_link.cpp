@@ -30,13 +30,15 @@ bool stays_manifold_at(index_t v, const NewPyramid& y, const Visible& vis) {
         link[n++] = {b, c};
         return true;
     };
-    for (const VisibleFace& face : vis.faces) {
-        if (face.role != FaceRole::Front || !face.has(v) || is_matched(face, y)) continue;
+    bool room = true;
+    vis.for_each_face_of(v, [&](const VisibleFace& face) {
+        if (!room || face.role != FaceRole::Front || is_matched(face, y)) return;
         int i = 0;
         while (face.node[i] != v) ++i;
-        for (int j = 1; j + 1 < face.size; ++j)
-            if (!add(face.node[(i + j) % face.size], face.node[(i + j + 1) % face.size])) return false;
-    }
+        for (int j = 1; j + 1 < face.size && room; ++j)
+            room = add(face.node[(i + j) % face.size], face.node[(i + j + 1) % face.size]);
+    });
+    if (!room) return false;
     for (int f = 0; f < 4; ++f) {
         if (!y.face_new[f]) continue;
         const std::array<index_t, 3> t{y.node[f], y.node[(f + 1) % 4], y.node[4]};

@@ -88,7 +88,9 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     }
     f.wide = wide.value_or(f.ideal);
     f.ideal_quality = f.wedge || f.lowered ? pyramid_scaled_jacobian({c[0], c[1], c[2], c[3], f.ideal}) : ideal_quality;
-    f.candidate_radius = opt.search_radius_factor * f.h;
+    // Over a thin ring the room ahead is the spacing, not h: nodes farther than the paper's
+    // radius scaled to it make pyramids that lean out of that room.
+    f.candidate_radius = opt.search_radius_factor * f.spacing;
     // Try nodes lie between M and N, at most |MN|·(1 - Rate_K) from N.
     const double lowest_rate = std::pow(opt.relax_rate, std::max(opt.try_nodes, 0));
     const double lift = f.wedge ? norm(f.ideal - f.centroid) : f.height;
@@ -97,7 +99,7 @@ Front make_front(const HybridMesh& mesh, const index_t* q, index_t index, const 
     reach = std::max(reach, norm(f.wide - f.ideal));  // the second apex's pyramid too
     // A hair more than the exact bound, so that rounding in the bound itself cannot matter.
     f.reach = reach * (1.0 + 1e-9);
-    f.query_radius = f.reach + opt.distance_factor * f.h * (1.0 + 1e-9);
+    f.query_radius = f.reach + opt.distance_factor * f.spacing * (1.0 + 1e-9);  // the largest threshold
     return f;
 }
 

@@ -9,6 +9,12 @@ namespace tubemesh::pyramids {
 
 namespace {
 
+// Candidates judged per front, nearest first. A front sees more only where the surface ahead is
+// meshed far finer than its quad (a tet hole's wall in a narrow gap): there the farther nodes
+// make pyramids as flat as the nearer ones, and judging each against every face ahead made
+// the phase quadratic in the surface's fineness.
+constexpr std::size_t kMostCandidates = 32;
+
 // Adds the face when its box comes within the query radius of N (and within the focus).
 // Inlined: the gather calls it for every face near every front.
 [[gnu::always_inline]] inline void add_face(const Front& f, const Focus& focus, const index_t* nodes,
@@ -137,6 +143,7 @@ void new_stamp(Visible& out, std::size_t edges) {
     if (++out.stamp == 0) {  // wrapped: every old mark could match again
         std::fill(out.base_mark.begin(), out.base_mark.end(), 0);
         std::fill(out.edge_mark.begin(), out.edge_mark.end(), 0);
+        std::fill(out.node_mark.begin(), out.node_mark.end(), 0);
         out.stamp = 1;
     }
     if (2 * edges > out.edge_mark.size()) {
@@ -164,11 +171,32 @@ void mark_base(Visible& out, index_t n) {
     out.base_mark[n] = out.stamp;
 }
 
+// The faces of each node, in face order (for_each_face_of): pushed from the last face.
+void index_faces(Visible& out) {
+    out.slot_next.resize(4 * out.faces.size());
+    for (std::size_t i = out.faces.size(); i-- > 0;) {
+        const VisibleFace& face = out.faces[i];
+        for (int k = 0; k < face.size; ++k) {
+            const index_t n = face.node[k];
+            if (n >= out.node_mark.size()) {
+                const std::size_t size = std::size_t{n} + 1 + out.node_mark.size() / 2;
+                out.node_mark.resize(size, 0);
+                out.node_first.resize(size, -1);
+            }
+            const auto slot = static_cast<std::int32_t>(4 * i + static_cast<std::size_t>(k));
+            out.slot_next[static_cast<std::size_t>(slot)] = out.node_mark[n] == out.stamp ? out.node_first[n] : -1;
+            out.node_mark[n] = out.stamp;
+            out.node_first[n] = slot;
+        }
+    }
+}
+
 // Every edge of the visible faces once, with whether it touches the base's neighbourhood.
 void collect_edges(Visible& out) {
     std::size_t sides = 0;
     for (const VisibleFace& face : out.faces) sides += face.size;
     new_stamp(out, sides);
+    index_faces(out);
     for (const VisibleFace& face : out.faces)
         if (face.at_base)
             for (int k = 0; k < face.size; ++k) mark_base(out, face.node[k]);
@@ -226,6 +254,7 @@ void collect_nodes(const World& w, index_t i, const Focus& focus, Visible& out) 
     }
     std::sort(out.candidates.begin(), out.candidates.end(),
               [](const NearNode& l, const NearNode& r) { return l.d2 < r.d2 || (l.d2 == r.d2 && l.id < r.id); });
+    if (out.candidates.size() > kMostCandidates) out.candidates.resize(kMostCandidates);
 }
 
 }  // namespace

@@ -75,6 +75,16 @@ struct Visible {
     // An edge (a, b) of the visible faces (either order).
     bool has_edge(index_t a, index_t b) const;
 
+    // Calls f(face) for each visible face that holds node n, in the order of `faces`. A
+    // candidate's checks around its nodes read these, not every face: a front over a finely
+    // meshed surface sees thousands.
+    template <class F>
+    void for_each_face_of(index_t n, F&& f) const {
+        if (n >= node_mark.size() || node_mark[n] != stamp) return;
+        for (std::int32_t s = node_first[n]; s >= 0; s = slot_next[static_cast<std::size_t>(s)])
+            f(faces[static_cast<std::size_t>(s) / 4]);
+    }
+
     // Marks of the last gather, valid where equal to `stamp` (so nothing is cleared between
     // fronts): per node id, the node belongs to a face at the base; per slot of an open-addressing
     // table of edge keys, the slot holds an edge.
@@ -83,6 +93,10 @@ struct Visible {
     std::vector<std::uint64_t> edge_slot;
     std::vector<std::uint32_t> edge_mark;
     int edge_bits = 0;
+    // The lists for for_each_face_of: per node id its first slot (valid where node_mark equals
+    // `stamp`), per slot 4·face + corner the next one holding that node (-1: none).
+    std::vector<std::uint32_t> node_mark;
+    std::vector<std::int32_t> node_first, slot_next;
 };
 
 // What one candidate can fail on: only faces and edges whose boxes come within the distance

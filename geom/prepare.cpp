@@ -23,7 +23,7 @@
 #include "geom/model/surface_map_occt.hpp"
 #include "geom/model/model_occt.hpp"
 #include "geom/sizing/ring_stop_place.hpp"
-#include "geom/tubes/junction.hpp"
+#include "geom/sizing/junction.hpp"
 #include "geom/tubes/ring_stop.hpp"
 #include "geom/working_scale.hpp"
 

@@ -17,7 +17,7 @@
 // ring on each stretch with room instead: the wall is split by a cross-section a diameter before
 // the spot on each side (geom/sizing/ring_stop_place.hpp), each ring stops there with pyramids on
 // its end quads, and the wall between gets tets. So do a branch that ends on another pipe's wall,
-// drilled holes whose walls meet and a blind hole (geom/tubes/junction.hpp): their stretches from
+// drilled holes whose walls meet and a blind hole (geom/sizing/junction.hpp): their stretches from
 // each open end stop before the junction or the bottom. The model meshed is then the split one
 // (PreparedModel::split), whose face ids the mesh's groups and the retry's drops use.
 //

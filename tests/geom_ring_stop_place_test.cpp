@@ -1,10 +1,10 @@
 // Where a ring stops before a spot (geom/sizing/ring_stop_place.hpp): a diameter before the first
 // point without room, seen from each end with a stretch worth a ring; before the wall of another
-// pipe (geom/tubes/junction.hpp) and before a blind hole's bottom.
+// pipe (geom/sizing/junction.hpp) and before a blind hole's bottom.
 #include <gtest/gtest.h>
 
 #include "geom/sizing/ring_stop_place.hpp"
-#include "geom/tubes/junction.hpp"
+#include "geom/sizing/junction.hpp"
 
 namespace tubemesh::geom {
 namespace {

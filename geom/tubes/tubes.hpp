@@ -59,7 +59,7 @@ struct TubeInfo {
         double length = 0;  // of the whole centre line
         std::vector<Vec3> centre_line;  // the whole one
         std::string reason;  // why: the spot beyond, for the reports
-        // The wall meets another pipe's beyond the cut (geom/tubes/junction.hpp): no whole tube
+        // The wall meets another pipe's beyond the cut (geom/sizing/junction.hpp): no whole tube
         // runs on, so `wall`, `length` and `centre_line` are the pipe's and the stretch is
         // discretised as it is.
         bool stretch_only = false;

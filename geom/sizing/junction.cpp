@@ -1,4 +1,4 @@
-#include "geom/tubes/junction.hpp"
+#include "geom/sizing/junction.hpp"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>

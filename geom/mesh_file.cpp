@@ -37,7 +37,7 @@ void add_quality_warnings(PipelineResult& r, const PreparedModel& prepared, cons
              : std::string();
     if (q.tet_collapse.count > 0 && q.tet_collapse.min < kTetCollapseFloor)
         r.warnings.push_back(fmt::format(
-            "the worst tetrahedron has collapse {:.3f}, below {}{}", q.tet_collapse.min, kTetCollapseFloor,
+            "the worst tetrahedron has collapse {:.4f}, below {}{}", q.tet_collapse.min, kTetCollapseFloor,
             !prepared.flat_tets_cause.empty() ? "; likely cause: " + prepared.flat_tets_cause
             : !plan.changes.empty()           ? "; likely cause: the ring was thinned (" + plan.changes.back().rule +
                                           ": " + plan.changes.back().reason + ")"

@@ -1,5 +1,6 @@
 // Geometry the hex rings cannot mesh (geom/sizing/geometry_diagnosis.hpp) is meshed with tets
-// where no ring fits: `tubemesh mesh` writes a mesh that passes `tubemesh check`, with one warning
+// where no ring fits: `tubemesh mesh` writes a mesh that passes `tubemesh check` and that Gmsh and
+// meshio read back whole, with one warning
 // naming the faces or pipes and what would give them rings; a wall tangent to a face is refused. The
 // solids come from block specs with the builder's clearance checks off.
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "tests/support/cli_command.hpp"
+#include "tests/support/outside_readers.hpp"
 #include "tests/support/process.hpp"
 
 namespace {
@@ -17,6 +19,8 @@ namespace {
 using tubemesh::testing::cli;
 using tubemesh::testing::q;
 using tubemesh::testing::run_command;
+using tubemesh::testing::run_script;
+using nlohmann::json;
 using tubemesh::testing::TempDir;
 namespace fs = std::filesystem;
 
@@ -42,10 +46,26 @@ TEST_P(CliMeshGeometry, IsMeshedWithTetsThereAndWarned) {
                                      << "]}";
     ASSERT_EQ(run_command(cli() + " make-block --spec " + q(dir / "spec.json") + " -o " + q(dir / "in.step")).exit_code,
               0);
-    const auto r = run_command(cli() + " mesh " + q(dir / "in.step") + " -o " + q(dir / "out.msh"));
+    const auto r = run_command(cli() + " mesh " + q(dir / "in.step") + " -o " + q(dir / "out.msh") + " -o " +
+                               q(dir / "out.vtu") + " --report " + q(dir / "report.json"));
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << "want '" << c.message << "' in: " << r.err;
     EXPECT_EQ(run_command(cli() + " check " + q(dir / "out.msh")).exit_code, 0);
+
+    // Gmsh and meshio read back every node and cell the report counts.
+    const json report = json::parse(std::ifstream(dir / "report.json"));
+    const int nodes = report["nodes"], hexes = report["hexes"], pyramids = report["pyramids"], tets = report["tets"];
+    const json gmsh = run_script("gmsh_summary.py", {(dir / "out.msh").string()});
+    EXPECT_EQ(gmsh["nodes"], nodes);
+    EXPECT_EQ(gmsh["elements"].value("4", 0), tets);
+    EXPECT_EQ(gmsh["elements"].value("5", 0), hexes);
+    EXPECT_EQ(gmsh["elements"].value("7", 0), pyramids);
+    const json meshio = run_script("meshio_summary.py", {(dir / "out.vtu").string()});
+    EXPECT_EQ(meshio["points"], nodes);
+    EXPECT_EQ(meshio["cells"].value("tetra", 0), tets);
+    EXPECT_EQ(meshio["cells"].value("hexahedron", 0), hexes);
+    EXPECT_EQ(meshio["cells"].value("pyramid", 0), pyramids);
+    EXPECT_GT(meshio["quality_min"].get<double>(), 0);
 }
 
 const std::string kAlongX = line(3, 3, 3, 3);

@@ -233,6 +233,12 @@ std::optional<TubeInfo> stretch_of_group(const Model& model, const std::vector<i
     return std::nullopt;
 }
 
+// Whether one of `tubes` has face `f` on its wall.
+bool on_a_wall_of(const std::vector<TubeInfo>& tubes, int f) {
+    return std::any_of(tubes.begin(), tubes.end(),
+                       [&](const TubeInfo& t) { return std::binary_search(t.faces.begin(), t.faces.end(), f); });
+}
+
 // The tubes the caller stopped (PrepareOptions::stops) cut back to their stretch: each stop's
 // closed edge, found on one tube's wall near the cross-section's centre. A tube stopped twice
 // becomes two, one from each end, the second right after the first; the wall between is beyond both.
@@ -257,18 +263,8 @@ void apply_stops(const Model& model, const std::vector<PrepareOptions::StopAt>& 
             }
     }
     // The wall between a pipe's stretches is beyond them all; the group keeps what none holds.
-    for (TubeInfo& t : met)
-        std::erase_if(t.stop->beyond, [&](int f) {
-            return std::any_of(met.begin(), met.end(), [&](const TubeInfo& x) {
-                return std::binary_search(x.faces.begin(), x.faces.end(), f);
-            });
-        });
-    for (TubeRejection& r : tubes.rejected)
-        std::erase_if(r.faces, [&](int f) {
-            return std::any_of(met.begin(), met.end(), [&](const TubeInfo& x) {
-                return std::binary_search(x.faces.begin(), x.faces.end(), f);
-            });
-        });
+    for (TubeInfo& t : met) std::erase_if(t.stop->beyond, [&](int f) { return on_a_wall_of(met, f); });
+    for (TubeRejection& r : tubes.rejected) std::erase_if(r.faces, [&](int f) { return on_a_wall_of(met, f); });
     std::erase_if(tubes.rejected, [](const TubeRejection& r) { return r.faces.empty() && r.loops > 2; });
     tubes.tubes.clear();
     for (std::size_t i = 0; i < found.size(); ++i) {
@@ -277,11 +273,7 @@ void apply_stops(const Model& model, const std::vector<PrepareOptions::StopAt>& 
             continue;
         }
         for (TubeInfo& t : stretches[i])
-            std::erase_if(t.stop->beyond, [&](int f) {
-                return std::any_of(stretches[i].begin(), stretches[i].end(), [&](const TubeInfo& x) {
-                    return std::binary_search(x.faces.begin(), x.faces.end(), f);
-                });
-            });
+            std::erase_if(t.stop->beyond, [&](int f) { return on_a_wall_of(stretches[i], f); });
         for (TubeInfo& t : stretches[i]) tubes.tubes.push_back(std::move(t));
     }
     for (TubeInfo& t : met) tubes.tubes.push_back(std::move(t));
@@ -588,16 +580,17 @@ PreparedModel prepare_unguarded(const Model& model, const PrepareOptions& option
         // A pipe without a ring was warned of already, narrow gap or not.
         const std::vector<HoleClearance> gaps = measure_hole_clearances(model, holes);
         narrow_gap_warnings(gaps, p.flat_tets_cause);
-        // Else pipe walls that meet: they do at a sharp angle where pipes of one size cross or overlap.
+        // Else pipe walls that meet: they do at a sharp angle where pipes of one size cross or overlap;
+        // dropped, or between stretches with rings (an L of drilled holes is no drop).
+        const auto walls_meet = [&](const std::vector<int>& faces) {
+            if (p.flat_tets_cause.empty())
+                p.flat_tets_cause =
+                    fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there", join(faces));
+        };
         for (const RingDrop& d : p.dropped)
-            if (p.flat_tets_cause.empty() && d.length == 0)
-                p.flat_tets_cause = fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there",
-                                                join(d.faces));
-        // Or walls that meet between stretches with rings (an L of drilled holes is no drop).
+            if (d.length == 0) walls_meet(d.faces);
         for (const TubeInfo& t : p.tubes.tubes)
-            if (p.flat_tets_cause.empty() && t.stop && t.stop->stretch_only)
-                p.flat_tets_cause = fmt::format("pipe walls that meet (faces {}), at an angle that can be sharp there",
-                                                join(t.stop->beyond));
+            if (t.stop && t.stop->stretch_only) walls_meet(t.stop->beyond);
         std::vector<HoleClearance> holes_only;
         for (const HoleClearance& h : gaps)
             if (std::none_of(p.dropped.begin(), p.dropped.end(), [&](const RingDrop& d) { return d.faces == h.hole_faces; }))

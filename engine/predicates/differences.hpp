@@ -19,15 +19,20 @@ struct Differences {
     bool integral = false;              // x is valid
 
     Differences(const double* const* rows, const double* base, const int (&axes)[Dims]) {
+        // x * 0 is 0 for finite x and NaN for infinity or NaN: one test for all the inputs.
+        double zeros = 0;
         for (int r = 0; r <= Rows; ++r)
-            for (int k = 0; k < Dims; ++k) finite = finite && std::isfinite((r < Rows ? rows[r] : base)[axes[k]]);
+            for (int k = 0; k < Dims; ++k) zeros += (r < Rows ? rows[r] : base)[axes[k]] * 0.0;
+        finite = zeros == 0;
         if (!finite) return;
+        double tails = 0;  // the sum of the differences' rounding errors' magnitudes: 0 iff all are exact
         for (int r = 0; r < Rows; ++r)
             for (int k = 0; k < Dims; ++k) {
                 double tail = 0;
                 two_diff(rows[r][axes[k]], base[axes[k]], d[r][k], tail);
-                exact = exact && tail == 0;
+                tails += std::fabs(tail);
             }
+        exact = tails == 0;
         if (exact) {
             integral = to_common_integers(&d[0][0], Rows * Dims, 62, &x[0][0]);
             return;

@@ -7,9 +7,39 @@
 // expansions or BigInt on full-mantissa input, which is what near-degenerate meshes produce.
 #include <cstdint>
 
+#if defined(__x86_64__)
+#include <x86intrin.h>
+#endif
+
 #include "engine/predicates/bigint.hpp"  // uint128_t
 
 namespace tubemesh::predicates::detail {
+
+// x + y + carry_in, carry out in `carry`: one add-with-carry instruction where the target has it
+// (the 128-bit formulation below compiles to several).
+inline std::uint64_t add_carry(std::uint64_t x, std::uint64_t y, unsigned char& carry) {
+#if defined(__x86_64__)
+    unsigned long long r;
+    carry = _addcarry_u64(carry, x, y, &r);
+    return r;
+#else
+    const uint128_t t = static_cast<uint128_t>(x) + y + carry;
+    carry = static_cast<unsigned char>(t >> 64);
+    return static_cast<std::uint64_t>(t);
+#endif
+}
+// x - y - borrow_in, borrow out in `borrow`.
+inline std::uint64_t sub_borrow(std::uint64_t x, std::uint64_t y, unsigned char& borrow) {
+#if defined(__x86_64__)
+    unsigned long long r;
+    borrow = _subborrow_u64(borrow, x, y, &r);
+    return r;
+#else
+    const uint128_t t = static_cast<uint128_t>(x) - y - borrow;
+    borrow = static_cast<unsigned char>((t >> 64) & 1);
+    return static_cast<std::uint64_t>(t);
+#endif
+}
 
 template <int L>
 struct Wide {
@@ -28,52 +58,63 @@ struct Wide {
             if (limb[i] != 0) return 1;
         return 0;
     }
-    Wide negated() const {
-        Wide r;
-        std::uint64_t carry = 1;
-        for (int i = 0; i < L; ++i) {
-            const uint128_t t = static_cast<uint128_t>(~limb[i]) + carry;
-            r.limb[i] = static_cast<std::uint64_t>(t);
-            carry = static_cast<std::uint64_t>(t >> 64);
-        }
-        return r;
-    }
+    Wide negated() const { return Wide{} - *this; }
     friend Wide operator+(const Wide& a, const Wide& b) {
         Wide r;
-        std::uint64_t carry = 0;
-        for (int i = 0; i < L; ++i) {
-            const uint128_t t = static_cast<uint128_t>(a.limb[i]) + b.limb[i] + carry;
-            r.limb[i] = static_cast<std::uint64_t>(t);
-            carry = static_cast<std::uint64_t>(t >> 64);
-        }
+        unsigned char carry = 0;
+        for (int i = 0; i < L; ++i) r.limb[i] = add_carry(a.limb[i], b.limb[i], carry);
         return r;
     }
-    friend Wide operator-(const Wide& a, const Wide& b) { return a + b.negated(); }
+    friend Wide operator-(const Wide& a, const Wide& b) {
+        Wide r;
+        unsigned char borrow = 0;
+        for (int i = 0; i < L; ++i) r.limb[i] = sub_borrow(a.limb[i], b.limb[i], borrow);
+        return r;
+    }
 };
 
-// The exact product; the caller's bounds guarantee it fits in A + B limbs.
+// The exact product; the caller's bounds guarantee it fits in A + B limbs. The limbs read as
+// unsigned are a + 2^(64A) [a < 0] and b + 2^(64B) [b < 0]; their product, less
+// 2^(64A) b [a < 0] and 2^(64B) a [b < 0], is a b modulo 2^(64(A+B)): schoolbook on the limbs
+// and two masked subtractions, no negation of operands or result.
 template <int A, int B>
-Wide<A + B> operator*(const Wide<A>& a, const Wide<B>& b) {
+[[gnu::always_inline]] inline Wide<A + B> operator*(const Wide<A>& a, const Wide<B>& b) {
+    __extension__ typedef __int128 int128_t;
     if constexpr (A == 1 && B == 1) {  // the most frequent product: one hardware multiply
-        __extension__ typedef __int128 int128_t;
         const auto p = static_cast<uint128_t>(static_cast<int128_t>(static_cast<std::int64_t>(a.limb[0])) *
                                               static_cast<std::int64_t>(b.limb[0]));
         return Wide<2>{{static_cast<std::uint64_t>(p), static_cast<std::uint64_t>(p >> 64)}};
-    }
-    const Wide<A> ma = a.negative() ? a.negated() : a;
-    const Wide<B> mb = b.negative() ? b.negated() : b;
-    Wide<A + B> r;
-    for (int i = 0; i < A + B; ++i) r.limb[i] = 0;
-    for (int i = 0; i < A; ++i) {
-        std::uint64_t carry = 0;
-        for (int j = 0; j < B; ++j) {
-            const uint128_t t = static_cast<uint128_t>(ma.limb[i]) * mb.limb[j] + r.limb[i + j] + carry;
-            r.limb[i + j] = static_cast<std::uint64_t>(t);
-            carry = static_cast<std::uint64_t>(t >> 64);
+    } else if constexpr (A == 1 && B == 2) {
+        // z (b1 2^64 + b0) = (z b1 + floor(z b0 / 2^64)) 2^64 + (z b0 mod 2^64), with z b0 and
+        // z b1 signed products that fit in 128 bits.
+        const auto z = static_cast<std::int64_t>(a.limb[0]);
+        const auto low = static_cast<int128_t>(static_cast<uint128_t>(a.limb[0]) * b.limb[0] -
+                                               (z < 0 ? static_cast<uint128_t>(b.limb[0]) << 64 : 0));
+        const int128_t high = static_cast<int128_t>(z) * static_cast<std::int64_t>(b.limb[1]) + (low >> 64);
+        return Wide<3>{{static_cast<std::uint64_t>(low), static_cast<std::uint64_t>(high),
+                        static_cast<std::uint64_t>(static_cast<uint128_t>(high) >> 64)}};
+    } else {
+        Wide<A + B> r;
+        for (int i = 0; i < B; ++i) r.limb[i] = 0;
+#pragma GCC unroll 8
+        for (int i = 0; i < A; ++i) {
+            std::uint64_t carry = 0;
+#pragma GCC unroll 8
+            for (int j = 0; j < B; ++j) {
+                const uint128_t t = static_cast<uint128_t>(a.limb[i]) * b.limb[j] + r.limb[i + j] + carry;
+                r.limb[i + j] = static_cast<std::uint64_t>(t);
+                carry = static_cast<std::uint64_t>(t >> 64);
+            }
+            r.limb[i + B] = carry;
         }
-        r.limb[i + B] = carry;
+        const auto subtract_shifted = [&r](const std::uint64_t* limb, int count, int shift, std::uint64_t mask) {
+            unsigned char borrow = 0;
+            for (int i = 0; i < count; ++i) r.limb[shift + i] = sub_borrow(r.limb[shift + i], limb[i] & mask, borrow);
+        };
+        subtract_shifted(b.limb, B, A, 0 - static_cast<std::uint64_t>(a.negative()));
+        subtract_shifted(a.limb, A, B, 0 - static_cast<std::uint64_t>(b.negative()));
+        return r;
     }
-    return a.negative() != b.negative() ? r.negated() : r;
 }
 
 // Integers below 2^62 in magnitude, the input of this tier.

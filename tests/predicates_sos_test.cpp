@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/predicates/filters.hpp"
 #include "engine/predicates/predicates.hpp"
 #include "tests/support/predicates_reference.hpp"
 
@@ -178,6 +179,68 @@ TEST(PredicatesSos, InsphereMatchesDefinitionOverWideRange) {
         ASSERT_NE(got, 0);
         ASSERT_EQ(got, -perturbed_determinant_sign(p, id, true)) << "trial " << trial;
     }
+}
+
+// Points of rings swept along an axis, as a tube's hex rings: full-mantissa coordinates whose
+// differences are exact (the integer tier of the exact predicates). A point of one ring and its
+// copy on another span rectangles (co-spherical with any fifth point) and right prisms; two
+// rings of the same circle lie on one sphere, up to the rounding of their points, so any five
+// of their points are a near-tie, and some are moved by a few ulps. Unperturbed signs against
+// GMP, perturbed ones against the definition.
+TEST(PredicatesSos, InsphereOnSweptRingsMatchesDefinition) {
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(0, 1);
+    tubemesh::predicates::test::Reference ref;
+    int zeros = 0, near_ties = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const double cx = 20 * u(rng), cy = 15 * u(rng), z0 = 3 * u(rng);
+        const double radius = 0.016 * (1 + u(rng)), step = 0.01 * (1 + u(rng)), phase = u(rng);
+        const int sides = 6 * (1 + static_cast<int>(rng() % 3));
+        std::vector<Point> ring;  // layer l, side k at l * sides + k
+        for (int layer = 0; layer < 3; ++layer)
+            for (int k = 0; k < sides; ++k) {
+                const double a = phase + 2 * M_PI * k / sides;
+                ring.push_back({cx + radius * std::cos(a), cy + radius * std::sin(a), z0 + layer * step});
+            }
+        auto at = [&](int layer, int k) { return ring[layer * sides + k]; };
+        auto side = [&] { return static_cast<int>(rng() % sides); };
+        auto layer = [&] { return static_cast<int>(rng() % 3); };
+        std::vector<Point> p(5);
+        switch (trial % 3) {
+        case 0: {  // a rectangle and any ring point
+            const int i = side(), j = side(), l0 = layer(), l1 = layer();
+            p = {at(l0, i), at(l0, j), at(l1, i), at(l1, j), ring[rng() % ring.size()]};
+            break;
+        }
+        case 1: {  // five corners of a right prism over a triangle of one ring
+            const int l0 = layer(), l1 = layer();
+            const int k[3] = {side(), side(), side()};
+            std::vector<Point> prism{at(l0, k[0]), at(l0, k[1]), at(l0, k[2]), at(l1, k[0]), at(l1, k[1]), at(l1, k[2])};
+            prism.erase(prism.begin() + static_cast<long>(rng() % 6));
+            std::copy(prism.begin(), prism.end(), p.begin());
+            break;
+        }
+        default:
+            for (Point& x : p) x = ring[rng() % ring.size()];
+        }
+        std::shuffle(p.begin(), p.end(), rng);
+        if (rng() % 3 == 0) {
+            double& c = p[rng() % 5][rng() % 3];
+            for (int k = 1 + static_cast<int>(rng() % 2); k > 0; --k) c = std::nextafter(c, rng() % 2 ? 100.0 : -100.0);
+        }
+        const double* q[5] = {p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()};
+        const int exact = insphere(q[0], q[1], q[2], q[3], q[4]);
+        ASSERT_EQ(exact, ref.insphere(q[0], q[1], q[2], q[3], q[4])) << "trial " << trial;
+        zeros += exact == 0;
+        near_ties += exact != 0 && tubemesh::predicates::detail::insphere_filter(q[0], q[1], q[2], q[3], q[4]) == 0;
+        const std::vector<std::uint32_t> id = distinct_indices(rng, 5);
+        const int got = insphere_sos(q[0], q[1], q[2], q[3], q[4], id[0], id[1], id[2], id[3], id[4]);
+        ASSERT_NE(got, 0);
+        ASSERT_EQ(got, -perturbed_determinant_sign(p, id, true)) << "trial " << trial;
+        ASSERT_EQ(insphere_sos_unfiltered(q[0], q[1], q[2], q[3], q[4], id[0], id[1], id[2], id[3], id[4]), got);
+    }
+    EXPECT_GT(zeros, 600);
+    EXPECT_GT(near_ties, 300);
 }
 
 // All 24 orders of four coplanar points (some coincident): never 0, sign follows the parity.

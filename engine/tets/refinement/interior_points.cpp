@@ -9,7 +9,9 @@
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
 
+#include "engine/core/ordered_compact.hpp"
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/core/vec3_ops.hpp"
@@ -234,18 +236,18 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
         }
         memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
     });
-    std::vector<index_t> asking;
-    for (std::size_t i = 0; i < faces.size(); ++i)
-        if (at_node[i]) asking.push_back(static_cast<index_t>(i));
+    std::vector<index_t> asking = kept_indices(faces.size(), [&](std::size_t i) { return at_node[i] != 0; });
     const auto node_less = [&](index_t i, index_t j) {
         const Vec3 &a = node_of[i], &b = node_of[j];
         return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
     };
-    std::sort(asking.begin(), asking.end(), node_less);
-    std::vector<std::size_t> run_begin;  // runs of equal nodes in `asking`
-    for (std::size_t k = 0; k < asking.size(); ++k)
-        if (k == 0 || node_less(asking[k - 1], asking[k])) run_begin.push_back(k);
-    run_begin.push_back(asking.size());
+    // By node, then position: one order, whatever sorts it.
+    tbb::parallel_sort(asking.begin(), asking.end(),
+                       [&](index_t i, index_t j) { return node_less(i, j) || (!node_less(j, i) && i < j); });
+    // Runs of equal nodes in `asking`.
+    std::vector<index_t> run_begin =
+        kept_indices(asking.size(), [&](std::size_t k) { return k == 0 || node_less(asking[k - 1], asking[k]); });
+    run_begin.push_back(static_cast<index_t>(asking.size()));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, run_begin.size() - 1, 64), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
             const Vec3 node = node_of[asking[run_begin[k]]];
@@ -275,16 +277,8 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
         }
     });
     // Faces come in increasing order, so the entries stay sorted for the next round's search.
-    std::vector<ProposalMemo::Entry> entries;
-    entries.reserve(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i)
-        if (known[i]) entries.push_back(now[i]);
-    memo.entries.swap(entries);
-    std::vector<Candidate> kept;
-    kept.reserve(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i)
-        if (ok[i]) kept.push_back(out[i]);
-    return kept;
+    memo.entries = kept_items(now, [&](std::size_t i) { return known[i] != 0; });
+    return kept_items(out, [&](std::size_t i) { return ok[i] != 0; });
 }
 
 namespace {

@@ -425,11 +425,13 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
                                    const MeshView* mesh) {
     const std::size_t n = c.size();
     std::vector<double> cx(n), cy(n), cz(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        cx[i] = c[i].p[0];
-        cy[i] = c[i].p[1];
-        cz[i] = c[i].p[2];
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            cx[i] = c[i].p[0];
+            cy[i] = c[i].p[1];
+            cz[i] = c[i].p[2];
+        }
+    });
     std::vector<index_t> kept;
     if (!n) return kept;
     GrowingPoints::Impl& points = *existing.impl_;
@@ -446,16 +448,16 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     // candidates that passed the first test can take a place or block a later one, so the tree
     // holds those alone (after the first rounds most candidates fall at the first test). The
     // queries are independent, so they run in parallel; only the greedy pass is serial.
-    std::vector<index_t> free;
-    for (std::size_t i = 0; i < n; ++i)
-        if (free_of_points[i]) free.push_back(static_cast<index_t>(i));
+    const std::vector<index_t> free = kept_indices(n, [&](std::size_t i) { return free_of_points[i] != 0; });
     if (free.empty()) return kept;
     std::vector<double> fx(free.size()), fy(free.size()), fz(free.size());
-    for (std::size_t k = 0; k < free.size(); ++k) {
-        fx[k] = cx[free[k]];
-        fy[k] = cy[free[k]];
-        fz[k] = cz[free[k]];
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, free.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+            fx[k] = cx[free[k]];
+            fy[k] = cy[free[k]];
+            fz[k] = cz[free[k]];
+        }
+    });
     const PointIndex cands(fx, fy, fz);
     // earlier[k]: the positions in `free` of the free candidates before free[k] within its radius.
     std::vector<std::vector<index_t>> earlier(free.size());

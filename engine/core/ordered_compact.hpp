@@ -48,8 +48,8 @@ std::vector<index_t> kept_indices(std::size_t n, Keep&& keep) {
 }
 
 // out[k] = in[i] for the i with keep(i), in order.
-template <class T, class Keep>
-std::vector<T> kept_items(const std::vector<T>& in, Keep&& keep) {
+template <class T, class Alloc, class Keep>
+std::vector<T> kept_items(const std::vector<T, Alloc>& in, Keep&& keep) {
     std::vector<T> out;
     ordered_compact(
         in.size(), keep, [&](std::size_t count) { out.resize(count); },

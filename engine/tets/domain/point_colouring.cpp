@@ -15,7 +15,7 @@ namespace {
 constexpr std::size_t kRowsPerChunk = std::size_t{1} << 18;
 constexpr std::size_t kMaxChunks = 8;
 constexpr std::size_t kPointsPerChunk = 2048;
-constexpr std::size_t kPointsPerBlock = 16384;
+constexpr std::size_t kPointsPerBlock = 4096;
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "engine/core/ordered_compact.hpp"
+#include "engine/core/uninit_vector.hpp"
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/core/vec3_ops.hpp"
@@ -176,14 +177,15 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                                       ProposalMemo& memo, const FarLattice& lattice) {
     constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
     const std::vector<ProposalMemo::Entry>& before = memo.entries;
-    std::vector<ProposalMemo::Entry> now(faces.size());
-    std::vector<Candidate> out(faces.size());
+    // Filled in the parallel loops below (a slot of `out` only where ok): no serial zeroing.
+    UninitVector<ProposalMemo::Entry> now(faces.size());
+    UninitVector<Candidate> out(faces.size());
     std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
     const double far = space.far_size();
     // Ideal points that snap to a lattice node if the node passes far_and_clear: the node, and
     // the faces' positions in `faces`. Several faces of a round propose the same node, and the
     // answer depends on the node only, so each distinct node is asked once (below).
-    std::vector<Vec3> node_of(faces.size());
+    UninitVector<Vec3> node_of(faces.size());  // set where at_node
     std::vector<std::uint8_t> at_node(faces.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::uint64_t reused = 0;

@@ -251,6 +251,37 @@ TEST(HilbertKey, VisitsEveryCellOfASmallGridOnceWithUnitSteps) {
     }
 }
 
+// curve_order computes its box, keys and sort in parallel: the serial loop's order (keys on a
+// 2^16 grid over the bounding cube, sorted as (key, index)) at 1 and 2 threads, with repeated
+// points (equal keys) among them.
+TEST(InsertionOrder, CurveOrderMatchesTheSerialSort) {
+    const Points p = random_cube(50'000, 4);
+    std::vector<double> xyz;
+    for (std::size_t i = 0; i < p.size(); ++i) xyz.insert(xyz.end(), {p.x[i], p.y[i], p.z[i]});
+    xyz.insert(xyz.end(), xyz.begin(), xyz.begin() + 3 * 1000);
+    const std::size_t n = xyz.size() / 3;
+    double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {lo[0], lo[1], lo[2]};
+    for (std::size_t i = 0; i < n; ++i)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], xyz[3 * i + a]);
+            hi[a] = std::max(hi[a], xyz[3 * i + a]);
+        }
+    const double scale = double((1u << 16) - 1) / std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    std::vector<std::pair<std::uint64_t, index_t>> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t g[3];
+        for (int a = 0; a < 3; ++a) g[a] = static_cast<std::uint32_t>((xyz[3 * i + a] - lo[a]) * scale);
+        key[i] = {hilbert_key(g[0], g[1], g[2], 16), static_cast<index_t>(i)};
+    }
+    std::sort(key.begin(), key.end());
+    std::vector<index_t> expected(n);
+    for (std::size_t i = 0; i < n; ++i) expected[i] = key[i].second;
+    for (int threads : {1, 2}) {
+        tbb::task_arena arena(threads);
+        arena.execute([&] { EXPECT_EQ(curve_order(xyz), expected) << threads << " threads"; });
+    }
+}
+
 TEST(InsertionOrder, IsAPermutationWithGrowingRounds) {
     const Points p = random_cube(100'000, 1);
     const InsertionOrder o = brio_hilbert_order(p.x, p.y, p.z);

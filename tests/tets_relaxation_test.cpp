@@ -9,7 +9,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <random>
+#include <ranges>
 #include <vector>
+
+#include <tbb/task_arena.h>
 
 #include "engine/core/vec3_ops.hpp"
 #include "engine/sizing/control_space.hpp"
@@ -184,6 +188,45 @@ TEST(Relaxation, DropUnusedPointsCompactsInOrder) {
     ASSERT_EQ(e.point_count(), 6u);
     EXPECT_EQ(e.point(4)[0], 9.0);
     EXPECT_EQ(e.tets.vertex(1)[3], 5u);
+}
+
+// Many points, a random third of them in no tet: the serial loop's ids, coordinates and rows at
+// 1 and 2 threads (drop_unused_points flags, renumbers and copies in parallel chunks).
+TEST(Relaxation, DropUnusedPointsMatchesTheSerialLoop) {
+    constexpr index_t kPoints = 60000, kFirst = 1000, kTets = 30000;
+    std::mt19937_64 rng(5);
+    TetDomain d;
+    for (index_t p = 0; p < kPoints; ++p) d.xyz.insert(d.xyz.end(), {double(p), 0.5 * p, -1.0 * p});
+    d.front_points = kFirst;
+    d.tets.reserve(kTets);
+    d.tets.set_size(kTets);
+    for (index_t t = 0; t < kTets; ++t)
+        for (int k = 0; k < 4; ++k) {
+            index_t p = static_cast<index_t>(rng() % kPoints);
+            if (p % 3 == 0) p = p / 3;  // points 20000.. with p % 3 == 0 stay unused
+            d.tets.vertex(t)[k] = p;
+        }
+    std::vector<std::uint8_t> used(kPoints, 0);
+    for (index_t v : d.tets.vertices()) used[v] = 1;
+    std::vector<index_t> to(kPoints, kNoIndex);
+    std::vector<double> xyz(d.xyz.begin(), d.xyz.begin() + 3 * kFirst);
+    for (index_t p = 0; p < kPoints; ++p)
+        if (p < kFirst || used[p]) {
+            to[p] = p < kFirst ? p : static_cast<index_t>(xyz.size() / 3);
+            if (p >= kFirst) xyz.insert(xyz.end(), d.xyz.begin() + 3 * p, d.xyz.begin() + 3 * p + 3);
+        }
+    std::vector<index_t> rows;
+    for (index_t v : d.tets.vertices()) rows.push_back(to[v]);
+    for (int threads : {1, 2}) {
+        TetDomain e;
+        e.xyz = d.xyz;
+        e.front_points = kFirst;
+        e.tets = d.tets.clone();
+        tbb::task_arena arena(threads);
+        arena.execute([&] { EXPECT_EQ(drop_unused_points(e, kFirst), to) << threads << " threads"; });
+        EXPECT_EQ(e.xyz, xyz);
+        EXPECT_TRUE(std::ranges::equal(e.tets.vertices(), rows));
+    }
 }
 
 TEST(Relaxation, NoIterationsLeavesTheDomainAndBadInputThrows) {

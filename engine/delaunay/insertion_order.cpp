@@ -8,6 +8,7 @@
 #include <utility>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "engine/delaunay/huge_pages.hpp"
 
@@ -207,22 +208,41 @@ std::vector<index_t> curve_order(std::span<const double> xyz) {
     const std::size_t n = xyz.size() / 3;
     std::vector<index_t> order(n);
     if (n == 0) return order;
+    // Fixed chunks: min and max do not depend on how the points are grouped, the keys are the
+    // points' own, and (key, index) pairs are distinct, so every sort gives the one order.
+    constexpr std::size_t kChunk = 16384;
+    const std::size_t chunks = (n + kChunk - 1) / kChunk;
+    std::vector<std::array<double, 6>> box(chunks);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+        std::array<double, 6> b{xyz[3 * c * kChunk], xyz[3 * c * kChunk + 1], xyz[3 * c * kChunk + 2]};
+        std::copy_n(b.begin(), 3, b.begin() + 3);
+        for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
+            for (int a = 0; a < 3; ++a) {
+                b[a] = std::min(b[a], xyz[3 * i + a]);
+                b[3 + a] = std::max(b[3 + a], xyz[3 * i + a]);
+            }
+        box[c] = b;
+    });
     double lo[3] = {xyz[0], xyz[1], xyz[2]}, hi[3] = {lo[0], lo[1], lo[2]};
-    for (std::size_t i = 0; i < n; ++i)
+    for (const auto& b : box)
         for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], xyz[3 * i + a]);
-            hi[a] = std::max(hi[a], xyz[3 * i + a]);
+            lo[a] = std::min(lo[a], b[a]);
+            hi[a] = std::max(hi[a], b[3 + a]);
         }
     const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-300});
     const double scale = double((1u << 16) - 1) / extent;
     std::vector<std::pair<std::uint64_t, index_t>> key(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        std::uint32_t g[3];
-        for (int a = 0; a < 3; ++a) g[a] = static_cast<std::uint32_t>((xyz[3 * i + a] - lo[a]) * scale);
-        key[i] = {hilbert_key(g[0], g[1], g[2], 16), static_cast<index_t>(i)};
-    }
-    std::sort(key.begin(), key.end());
-    for (std::size_t i = 0; i < n; ++i) order[i] = key[i].second;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            std::uint32_t g[3];
+            for (int a = 0; a < 3; ++a) g[a] = static_cast<std::uint32_t>((xyz[3 * i + a] - lo[a]) * scale);
+            key[i] = {hilbert_key(g[0], g[1], g[2], 16), static_cast<index_t>(i)};
+        }
+    });
+    tbb::parallel_sort(key.begin(), key.end());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16384), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) order[i] = key[i].second;
+    });
     return order;
 }
 

@@ -21,6 +21,8 @@
 #include <type_traits>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+
 
 #include "engine/core/types.hpp"
 #include "engine/delaunay/huge_pages.hpp"
@@ -133,10 +135,14 @@ inline TetStore TetStore::clone() const {
     TetStore c;
     c.reserve(size_);
     c.size_ = size_;
-    if (size_ > 0) {
-        std::memcpy(c.vertex_.data(), vertex_.data(), std::size_t{4} * size_ * sizeof(index_t));
-        std::memcpy(c.neighbour_.data(), neighbour_.data(), std::size_t{4} * size_ * sizeof(index_t));
-    }
+    // In blocks, in parallel: the copy's pages are first touched by every thread, not one.
+    constexpr std::size_t kBlock = std::size_t{1} << 16;
+    const std::size_t n = std::size_t{4} * size_;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kBlock), [&](const tbb::blocked_range<std::size_t>& r) {
+        const std::size_t bytes = (r.end() - r.begin()) * sizeof(index_t);
+        std::memcpy(c.vertex_.data() + r.begin(), vertex_.data() + r.begin(), bytes);
+        std::memcpy(c.neighbour_.data() + r.begin(), neighbour_.data() + r.begin(), bytes);
+    });
     return c;
 }
 

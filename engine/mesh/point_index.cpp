@@ -45,9 +45,7 @@ struct PointIndex::Impl {
     SoaCloud cloud;  // must outlive the tree, which keeps a reference to it
     Tree tree;
     Impl(std::span<const double> x, std::span<const double> y, std::span<const double> z)
-        : cloud{x, y, z}, tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
-        tree.buildIndex();
-    }
+        : cloud{x, y, z}, tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}  // builds the tree
 };
 
 PointIndex::PointIndex(std::span<const double> x, std::span<const double> y, std::span<const double> z) {

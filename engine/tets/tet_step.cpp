@@ -2,10 +2,17 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
+
+#include "engine/core/ordered_compact.hpp"
 #include "engine/core/timing.hpp"
 #include "engine/core/vec3_ops.hpp"
 
@@ -75,7 +82,7 @@ void mark_sliding_points(const HybridMesh& mesh, std::span<const index_t> front,
             ++front_count[front[3 * t + k]];
             fans.push_back({to_domain[front[3 * t + k]], static_cast<index_t>(t)});
         }
-    std::sort(fans.begin(), fans.end());
+    tbb::parallel_sort(fans.begin(), fans.end());  // distinct pairs: one order
     dom.slide_rank.assign(dom.front_points, kNoIndex);
     dom.slide_normal.clear();
     dom.slide_offset.clear();
@@ -143,18 +150,25 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     }
 
     TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery, options.pulse);
-    if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
-    if (options.slide_surface) mark_sliding_points(mesh, front, to_domain, to_mesh, domain);
-    // The relaxation inserts the interior points again into this mesh.
-    RecoveredTets recovered;
-    if (options.relaxation.iterations > 0) recovered = recovered_tets(domain);
     if (options.part_done) options.part_done();
-
     beat(options.pulse);
+    // Three serial steps side by side: the movable points' tables (written into the domain), the
+    // copy of the recovered tets and the control space (both only read it).
+    RecoveredTets recovered;  // the relaxation inserts the interior points again into this mesh
+    std::optional<ControlSpace> control;
     ControlSpaceOptions co;
     co.far_size = options.far_size;
     co.gradation = options.gradation;
-    const ControlSpace space(domain, co);
+    tbb::parallel_invoke(
+        [&] {
+            if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
+            if (options.slide_surface) mark_sliding_points(mesh, front, to_domain, to_mesh, domain);
+        },
+        [&] {
+            if (options.relaxation.iterations > 0) recovered = recovered_tets(domain);
+        },
+        [&] { control.emplace(domain, co); });
+    const ControlSpace& space = *control;
     beat(options.pulse);
 
     std::vector<double> sizes;
@@ -171,36 +185,54 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     if (options.part_done) options.part_done();
 
     // Apexes and surface points the smoothing moved: their new places.
-    for (index_t p = 0; p < domain.front_points && domain.front_moves(); ++p)
-        if (domain.movable(p)) {
-            const double* q = domain.point(p);
-            mesh.x[to_mesh[p]] = q[0];
-            mesh.y[to_mesh[p]] = q[1];
-            mesh.z[to_mesh[p]] = q[2];
-        }
+    if (domain.front_moves())
+        tbb::parallel_for(tbb::blocked_range<index_t>(0, domain.front_points, 4096), [&](const tbb::blocked_range<index_t>& r) {
+            for (index_t p = r.begin(); p < r.end(); ++p)
+                if (domain.movable(p)) {
+                    const double* q = domain.point(p);
+                    mesh.x[to_mesh[p]] = q[0];
+                    mesh.y[to_mesh[p]] = q[1];
+                    mesh.z[to_mesh[p]] = q[2];
+                }
+        });
     // Append: points after the front's become new mesh points, in domain order.
     const index_t domain_points = domain.point_count();
     to_mesh.resize(domain_points, kNoIndex);
     // Recovery keeps the ids of Steiner points it removed again: only points of tets are added.
-    std::vector<char> used(domain_points, 0);
-    for (index_t t = 0; t < domain.tets.size(); ++t) {
-        const index_t* v = domain.tets.vertex(t);
-        for (int k = 0; k < 4; ++k) used[v[k]] = 1;
-    }
-    for (index_t p = domain.front_points; p < domain_points; ++p)
-        if (used[p]) {
-            const double* q = domain.point(p);
-            to_mesh[p] = mesh.add_point(q[0], q[1], q[2]);
-            ++stats.new_points;
+    // Threads may flag one point at once, always with 1: relaxed stores suffice.
+    std::vector<std::uint8_t> used(domain_points, 0);
+    tbb::parallel_for(tbb::blocked_range<index_t>(0, domain.tets.size(), 4096), [&](const tbb::blocked_range<index_t>& r) {
+        for (index_t t = r.begin(); t < r.end(); ++t) {
+            const index_t* v = domain.tets.vertex(t);
+            for (int k = 0; k < 4; ++k) std::atomic_ref<std::uint8_t>(used[v[k]]).store(1, std::memory_order_relaxed);
         }
+    });
+    const index_t first_new = mesh.point_count(), front_points = domain.front_points;
+    stats.new_points = static_cast<index_t>(ordered_compact(
+        domain_points - front_points, [&](std::size_t i) { return used[front_points + i] != 0; },
+        [&](std::size_t count) {
+            mesh.x.resize(first_new + count);
+            mesh.y.resize(first_new + count);
+            mesh.z.resize(first_new + count);
+        },
+        [&](std::size_t i, std::size_t k) {
+            const index_t p = front_points + static_cast<index_t>(i), to = first_new + static_cast<index_t>(k);
+            const double* q = domain.point(p);
+            to_mesh[p] = to;
+            mesh.x[to] = q[0];
+            mesh.y[to] = q[1];
+            mesh.z[to] = q[2];
+        }));
     CellBlock& tets = mesh.block(CellKind::Tet);
-    tets.nodes.reserve(tets.nodes.size() + 4 * std::size_t{domain.tets.size()});
-    tets.region.reserve(tets.region.size() + domain.tets.size());
-    for (index_t t = 0; t < domain.tets.size(); ++t) {
-        const index_t* v = domain.tets.vertex(t);
-        for (int k = 0; k < 4; ++k) tets.nodes.push_back(to_mesh[v[k]]);
-        tets.region.push_back(region);
-    }
+    const std::size_t first_tet = tets.region.size();
+    tets.nodes.resize(tets.nodes.size() + 4 * std::size_t{domain.tets.size()});
+    tets.region.resize(first_tet + domain.tets.size(), region);
+    tbb::parallel_for(tbb::blocked_range<index_t>(0, domain.tets.size(), 4096), [&](const tbb::blocked_range<index_t>& r) {
+        for (index_t t = r.begin(); t < r.end(); ++t) {
+            const index_t* v = domain.tets.vertex(t);
+            for (int k = 0; k < 4; ++k) tets.nodes[4 * (first_tet + t) + k] = to_mesh[v[k]];
+        }
+    });
     stats.tets = domain.tets.size();
     stats.seconds = seconds_since(t0);
     return stats;

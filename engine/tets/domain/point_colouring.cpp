@@ -15,6 +15,7 @@ namespace {
 constexpr std::size_t kRowsPerChunk = std::size_t{1} << 18;
 constexpr std::size_t kMaxChunks = 8;
 constexpr std::size_t kPointsPerChunk = 2048;
+constexpr std::size_t kPointsPerBlock = 4096;
 
 }  // namespace
 
@@ -31,13 +32,24 @@ Incidence build_incidence(const TetDomain& dom) {
         count[c].assign(points, 0);
         for (std::size_t k = chunk_begin(c); k < chunk_begin(c + 1); ++k) ++count[c][v[k]];
     });
+    // Integer prefix sums over fixed blocks of points: exact, so the same for any thread count.
     inc.offsets.resize(points + 1);
     inc.offsets[0] = 0;
-    for (std::size_t p = 0; p < points; ++p) {
-        index_t sum = 0;
-        for (std::size_t c = 0; c < chunks; ++c) sum += count[c][p];
-        inc.offsets[p + 1] = inc.offsets[p] + sum;
-    }
+    const std::size_t blocks = (points + kPointsPerBlock - 1) / kPointsPerBlock;
+    std::vector<index_t> block_first(blocks + 1, 0);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        index_t at = 0;
+        for (std::size_t p = b * kPointsPerBlock; p < std::min(points, (b + 1) * kPointsPerBlock); ++p) {
+            for (std::size_t c = 0; c < chunks; ++c) at += count[c][p];
+            inc.offsets[p + 1] = at;
+        }
+        block_first[b + 1] = at;
+    });
+    for (std::size_t b = 0; b < blocks; ++b) block_first[b + 1] += block_first[b];
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+        for (std::size_t p = b * kPointsPerBlock; p < std::min(points, (b + 1) * kPointsPerBlock); ++p)
+            inc.offsets[p + 1] += block_first[b];
+    });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t p = r.begin(); p != r.end(); ++p) {
             index_t at = inc.offsets[p];

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/core/types.hpp"
+#include "engine/core/uninit_vector.hpp"
 #include "engine/tets/domain/tet_domain.hpp"
 
 namespace tubemesh::tets {
@@ -16,7 +17,7 @@ namespace tubemesh::tets {
 // Point -> tets incidence as offsets + indices, tets in increasing order for every point.
 struct Incidence {
     std::vector<index_t> offsets;
-    std::vector<index_t> tets;
+    UninitVector<index_t> tets;  // filled in parallel: no serial zeroing first
     std::span<const index_t> of(index_t p) const { return {tets.data() + offsets[p], offsets[p + 1] - offsets[p]}; }
 };
 

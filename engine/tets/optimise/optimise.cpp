@@ -107,6 +107,14 @@ void points_of_tets_below(const TetDomain& dom, const std::vector<double>& q, do
                       });
 }
 
+// f(p) for every point p, in parallel: element-wise updates of the per-point flags.
+template <class F>
+void for_points(std::size_t points, F&& f) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points, 16384), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t p = r.begin(); p != r.end(); ++p) f(p);
+    });
+}
+
 // Once a pass gains little on the mean, later passes only work near the tets below this: the
 // ones that can still decide the minimum.
 constexpr double kFocusBelow = 0.35;
@@ -133,8 +141,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) 
     double last_mean = before.mean;
     bool focused = false;
     const auto focus = [&] {
-        if (focused)
-            for (std::size_t p = 0; p < points; ++p) near[p] &= poor_ring[p];
+        if (focused) for_points(points, [&](std::size_t p) { near[p] &= poor_ring[p]; });
     };
     for (int pass = 0; pass < o.passes; ++pass) {
         ++s.passes;
@@ -147,8 +154,9 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) 
         const FlipSweepCounts f =
             flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, last_mean, o.mean_floor,
                        pass > 0 ? &near : nullptr, changed, &collapses, pulse);
-        for (std::size_t p = 0; p < points; ++p)
+        for_points(points, [&](std::size_t p) {
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
+        });
         s.seconds_flips += seconds_since(t0);
         s.flips23 += f.flips23;
         s.flips32 += f.flips32;
@@ -162,7 +170,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) 
         if (pass > 0) {
             points_near(dom, changed_for_smoothing, near);
             focus();
-            for (std::size_t p = 0; p < points; ++p) near[p] &= bad_points[p];
+            for_points(points, [&](std::size_t p) { near[p] &= bad_points[p]; });
         }
         std::fill(changed.begin(), changed.end(), 0);
         // After the first pass a star with no tet below 0.5 only follows the ascent of its sum:
@@ -172,8 +180,9 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) 
                                                 o.mean_floor, pass > 0 ? &near : &bad_points, changed, collapses,
                                                 pass > 0 ? SmoothingTargets::AscentForFair : SmoothingTargets::All,
                                                 pulse);
-        for (std::size_t p = 0; p < points; ++p)
+        for_points(points, [&](std::size_t p) {
             if (changed[p]) changed_for_flips[p] = changed_for_smoothing[p] = 1;
+        });
         s.seconds_smoothing += seconds_since(t0);
         s.moves += m.moves;
         s.colours = std::max(s.colours, m.colours);
@@ -207,7 +216,7 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) 
             const FlipSweepCounts f = flip_sweep(dom, o.flip_threshold, o.min_gain, o.max_edge_ring, now.mean,
                                                  o.mean_floor, &near, changed, &collapses, pulse);
             points_near(dom, changed, poor);
-            for (std::size_t p = 0; p < near.size(); ++p) near[p] |= poor[p];  // with the inserted points
+            for_points(near.size(), [&](std::size_t p) { near[p] |= poor[p]; });  // with the inserted points
             for (int ring = 1; ring < kCleanupRings; ++ring) {
                 poor = near;
                 points_near(dom, poor, near);

@@ -11,6 +11,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/core/ordered_compact.hpp"
 #include "engine/core/vec3_ops.hpp"
 #include "engine/core/vec3_pair.hpp"
 #include "engine/core/vec3_quad.hpp"
@@ -197,15 +198,32 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
 
 }  // namespace
 
+namespace {
+
+template <class F>
+void for_each_listed(std::vector<index_t>& list, F&& f) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), 16384), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) f(list[i]);
+    });
+}
+
+}  // namespace
+
 SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, double min_gain, double floor,
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
                               std::vector<double>& collapses, SmoothingTargets targets, const Pulse& pulse) {
     SmoothingCounts counts;
     const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
-    std::vector<index_t> todo;
-    for (index_t p = dom.front_moves() ? 0 : dom.front_points; p < points; ++p)
-        if (dom.movable(p) && !inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
+    const index_t from = dom.front_moves() ? 0 : dom.front_points;
+    // The points from `from` on with ok(p), in order.
+    const auto listed = [&](auto&& ok) {
+        std::vector<index_t> out = kept_indices(points - from, [&](std::size_t i) { return ok(from + static_cast<index_t>(i)); });
+        for_each_listed(out, [&](index_t& p) { p += from; });
+        return out;
+    };
+    std::vector<index_t> todo =
+        listed([&](index_t p) { return dom.movable(p) && !inc.of(p).empty() && (!active || (*active)[p]); });
     std::vector<std::uint32_t> colour(points, kNoIndex);
     std::vector<std::uint8_t> moved, again(points, 0);
     std::vector<index_t> moved_points;
@@ -251,12 +269,8 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
             }
         }
         counts.moves += moved_points.size();
-        todo.clear();
-        for (index_t p = dom.front_moves() ? 0 : dom.front_points; p < points; ++p)
-            if (again[p] && dom.movable(p)) {
-                todo.push_back(p);
-                again[p] = 0;
-            }
+        todo = listed([&](index_t p) { return again[p] && dom.movable(p); });
+        for_each_listed(todo, [&](index_t p) { again[p] = 0; });
     }
     return counts;
 }

@@ -9,7 +9,10 @@
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
 
+#include "engine/core/ordered_compact.hpp"
+#include "engine/core/uninit_vector.hpp"
 #include "engine/mesh/point_index.hpp"
 #include "engine/mesh/topology.hpp"
 #include "engine/core/vec3_ops.hpp"
@@ -174,14 +177,15 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
                                       ProposalMemo& memo, const FarLattice& lattice) {
     constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
     const std::vector<ProposalMemo::Entry>& before = memo.entries;
-    std::vector<ProposalMemo::Entry> now(faces.size());
-    std::vector<Candidate> out(faces.size());
+    // Filled in the parallel loops below (a slot of `out` only where ok): no serial zeroing.
+    UninitVector<ProposalMemo::Entry> now(faces.size());
+    UninitVector<Candidate> out(faces.size());
     std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
     const double far = space.far_size();
     // Ideal points that snap to a lattice node if the node passes far_and_clear: the node, and
     // the faces' positions in `faces`. Several faces of a round propose the same node, and the
     // answer depends on the node only, so each distinct node is asked once (below).
-    std::vector<Vec3> node_of(faces.size());
+    UninitVector<Vec3> node_of(faces.size());  // set where at_node
     std::vector<std::uint8_t> at_node(faces.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
         std::uint64_t reused = 0;
@@ -234,18 +238,18 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
         }
         memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
     });
-    std::vector<index_t> asking;
-    for (std::size_t i = 0; i < faces.size(); ++i)
-        if (at_node[i]) asking.push_back(static_cast<index_t>(i));
+    std::vector<index_t> asking = kept_indices(faces.size(), [&](std::size_t i) { return at_node[i] != 0; });
     const auto node_less = [&](index_t i, index_t j) {
         const Vec3 &a = node_of[i], &b = node_of[j];
         return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
     };
-    std::sort(asking.begin(), asking.end(), node_less);
-    std::vector<std::size_t> run_begin;  // runs of equal nodes in `asking`
-    for (std::size_t k = 0; k < asking.size(); ++k)
-        if (k == 0 || node_less(asking[k - 1], asking[k])) run_begin.push_back(k);
-    run_begin.push_back(asking.size());
+    // By node, then position: one order, whatever sorts it.
+    tbb::parallel_sort(asking.begin(), asking.end(),
+                       [&](index_t i, index_t j) { return node_less(i, j) || (!node_less(j, i) && i < j); });
+    // Runs of equal nodes in `asking`.
+    std::vector<index_t> run_begin =
+        kept_indices(asking.size(), [&](std::size_t k) { return k == 0 || node_less(asking[k - 1], asking[k]); });
+    run_begin.push_back(static_cast<index_t>(asking.size()));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, run_begin.size() - 1, 64), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
             const Vec3 node = node_of[asking[run_begin[k]]];
@@ -275,16 +279,8 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
         }
     });
     // Faces come in increasing order, so the entries stay sorted for the next round's search.
-    std::vector<ProposalMemo::Entry> entries;
-    entries.reserve(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i)
-        if (known[i]) entries.push_back(now[i]);
-    memo.entries.swap(entries);
-    std::vector<Candidate> kept;
-    kept.reserve(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i)
-        if (ok[i]) kept.push_back(out[i]);
-    return kept;
+    memo.entries = kept_items(now, [&](std::size_t i) { return known[i] != 0; });
+    return kept_items(out, [&](std::size_t i) { return ok[i] != 0; });
 }
 
 namespace {
@@ -431,11 +427,13 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
                                    const MeshView* mesh) {
     const std::size_t n = c.size();
     std::vector<double> cx(n), cy(n), cz(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        cx[i] = c[i].p[0];
-        cy[i] = c[i].p[1];
-        cz[i] = c[i].p[2];
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+            cx[i] = c[i].p[0];
+            cy[i] = c[i].p[1];
+            cz[i] = c[i].p[2];
+        }
+    });
     std::vector<index_t> kept;
     if (!n) return kept;
     GrowingPoints::Impl& points = *existing.impl_;
@@ -452,16 +450,16 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     // candidates that passed the first test can take a place or block a later one, so the tree
     // holds those alone (after the first rounds most candidates fall at the first test). The
     // queries are independent, so they run in parallel; only the greedy pass is serial.
-    std::vector<index_t> free;
-    for (std::size_t i = 0; i < n; ++i)
-        if (free_of_points[i]) free.push_back(static_cast<index_t>(i));
+    const std::vector<index_t> free = kept_indices(n, [&](std::size_t i) { return free_of_points[i] != 0; });
     if (free.empty()) return kept;
     std::vector<double> fx(free.size()), fy(free.size()), fz(free.size());
-    for (std::size_t k = 0; k < free.size(); ++k) {
-        fx[k] = cx[free[k]];
-        fy[k] = cy[free[k]];
-        fz[k] = cz[free[k]];
-    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, free.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k < r.end(); ++k) {
+            fx[k] = cx[free[k]];
+            fy[k] = cy[free[k]];
+            fz[k] = cz[free[k]];
+        }
+    });
     const PointIndex cands(fx, fy, fz);
     // earlier[k]: the positions in `free` of the free candidates before free[k] within its radius.
     std::vector<std::vector<index_t>> earlier(free.size());

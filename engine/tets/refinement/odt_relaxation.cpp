@@ -1,11 +1,14 @@
 #include "engine/tets/refinement/odt_relaxation.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <span>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/core/ordered_compact.hpp"
 #include "engine/core/timing.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
@@ -58,7 +61,10 @@ bool move_point(const TetDomain& dom, index_t p, std::span<const index_t> star, 
 std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double> sizes) {
     const Incidence inc = build_incidence(dom);
     const index_t n = dom.point_count();
-    std::vector<double> moved_xyz = dom.xyz;
+    std::vector<double> moved_xyz(dom.xyz.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, moved_xyz.size(), 1 << 15), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::copy(dom.xyz.begin() + r.begin(), dom.xyz.begin() + r.end(), moved_xyz.begin() + r.begin());
+    });
     std::vector<std::uint8_t> moved(n, 0);
     tbb::enumerable_thread_specific<MoveScratch> scratch;
     tbb::parallel_for(tbb::blocked_range<index_t>(fixed, n, 64), [&](const tbb::blocked_range<index_t>& r) {
@@ -86,12 +92,18 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts, const Pulse& pulse) {
     const index_t fixed = recovered.points, n = dom.point_count();
     std::vector<index_t> used;
-    used.reserve(n - fixed);
     {
+        // Threads may flag one point at once, always with 1: relaxed stores suffice.
         std::vector<std::uint8_t> in_tet(n, 0);
-        for (index_t v : dom.tets.vertices()) in_tet[v] = 1;
-        for (index_t p = fixed; p < n; ++p)
-            if (in_tet[p]) used.push_back(p);
+        const std::span<const index_t> rows = dom.tets.vertices();
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size(), 16384), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t k = r.begin(); k < r.end(); ++k)
+                std::atomic_ref<std::uint8_t>(in_tet[rows[k]]).store(1, std::memory_order_relaxed);
+        });
+        used = kept_indices(n - fixed, [&](std::size_t i) { return in_tet[fixed + i] != 0; });
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, used.size(), 16384), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t k = r.begin(); k < r.end(); ++k) used[k] += fixed;
+        });
     }
     // The old tets' vertex rows alone (for the blocked points' second walks): the old store's
     // neighbour rows would only add to the peak while the new mesh is built.
@@ -100,12 +112,14 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts,
     delaunay::InsertionOrder order;
     {
         std::vector<double> x(used.size()), y(used.size()), z(used.size());
-        for (std::size_t i = 0; i < used.size(); ++i) {
-            const double* q = dom.point(used[i]);
-            x[i] = q[0];
-            y[i] = q[1];
-            z[i] = q[2];
-        }
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, used.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                const double* q = dom.point(used[i]);
+                x[i] = q[0];
+                y[i] = q[1];
+                z[i] = q[2];
+            }
+        });
         order = delaunay::brio_hilbert_order(x, y, z);
     }
     // The kernel holds every point (kernel id = domain id; the free ones not in a tet yet, the
@@ -114,7 +128,9 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts,
     tri.set_pulse(pulse);
     tri.adopt(std::move(dom.xyz), recovered.tets.clone());
     dom.xyz.clear();
-    for (index_t& k : order.order) k = used[k];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.order.size(), 16384), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) order.order[i] = used[order.order[i]];
+    });
     tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
     constexpr index_t kMinPointsPerPart = 64;
     const std::span<const index_t> all(order.order);

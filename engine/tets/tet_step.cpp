@@ -145,6 +145,10 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     TetDomain domain = recover_boundary(xyz, local, par, options.recovery, &stats.recovery, options.pulse);
     if (options.move_apexes) mark_movable_apexes(mesh, to_domain, options.apex_floor, domain);
     if (options.slide_surface) mark_sliding_points(mesh, front, to_domain, to_mesh, domain);
+    // The domain holds its own copies now: free these before the refinement grows it.
+    xyz = {};
+    local = {};
+    to_domain = {};
     // The relaxation inserts the interior points again into this mesh.
     RecoveredTets recovered;
     if (options.relaxation.iterations > 0) recovered = recovered_tets(domain);
@@ -162,7 +166,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr,
                         options.pulse);
     if (options.relaxation.iterations > 0) {
-        stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation, options.pulse);
+        stats.relaxation = relax_points(domain, std::move(recovered), sizes, par, options.relaxation, options.pulse);
         recovered = RecoveredTets();
     }
     if (options.part_done) options.part_done();  // refinement and relaxation

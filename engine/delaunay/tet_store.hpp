@@ -9,9 +9,11 @@
 // No flag array: inside the kernel a slot's state lives in its vertex row (see the marks
 // below), so visiting a tet touches two cache lines, not three.
 //
-// Arrays are raw malloc/realloc blocks, not std::vector: growing a 200 MB block then costs
-// an mremap instead of a copy, and slots are never value-initialised (a page is touched
-// only when a tet is written into it), which keeps the peak resident size at what is used.
+// Arrays are raw blocks (PodArray: malloc's when small, mappings of their own when large),
+// not std::vector: growing a 200 MB block then costs an mremap instead of a copy, and slots
+// are never value-initialised (a page is touched only when a tet is written into it), which
+// keeps the peak resident size at what is used.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -44,7 +46,9 @@ inline constexpr index_t kFreeSlot = kNoIndex;
 // Largest tet count the 4*tet+face encoding can address.
 inline constexpr std::size_t kMaxTets = (std::size_t{1} << 30) - 1;
 
-// A growable, uninitialised array of trivially copyable T.
+// A growable, uninitialised array of trivially copyable T. From kMappedBlockBytes on it is a
+// mapping of its own (huge_pages.hpp), which grows without a copy: the tet store grows every
+// refinement round and every flip round, and a copy of it set the tet step's memory peak.
 template <class T>
 class PodArray {
     static_assert(std::is_trivially_copyable_v<T>);
@@ -53,31 +57,45 @@ public:
     PodArray() = default;
     PodArray(const PodArray&) = delete;
     PodArray& operator=(const PodArray&) = delete;
-    PodArray(PodArray&& o) noexcept : data_(std::exchange(o.data_, nullptr)), cap_(std::exchange(o.cap_, 0)) {}
+    PodArray(PodArray&& o) noexcept
+        : data_(std::exchange(o.data_, nullptr)),
+          cap_(std::exchange(o.cap_, 0)),
+          mapped_(std::exchange(o.mapped_, false)) {}
     PodArray& operator=(PodArray&& o) noexcept {
         if (this != &o) {
-            std::free(data_);
+            release();
             data_ = std::exchange(o.data_, nullptr);
             cap_ = std::exchange(o.cap_, 0);
+            mapped_ = std::exchange(o.mapped_, false);
         }
         return *this;
     }
-    ~PodArray() { std::free(data_); }
+    ~PodArray() { release(); }
 
     // Grows or shrinks to exactly n elements, keeping the first min(n, old) elements.
     void reallocate(std::size_t n) {
         if (n == cap_) return;
         if (n == 0) {
-            std::free(data_);
-            data_ = nullptr;
-            cap_ = 0;
+            release();
             return;
         }
-        void* p = std::realloc(data_, n * sizeof(T));
+        const std::size_t bytes = n * sizeof(T);
+        void* p = nullptr;
+        if (mapped_) {
+            p = remap_block(data_, cap_ * sizeof(T), bytes);
+        } else if (kMapsBlocks && bytes >= kMappedBlockBytes) {
+            p = map_block(bytes);
+            if (p && data_) {
+                std::memcpy(p, data_, std::min(cap_, n) * sizeof(T));
+                std::free(data_);
+            }
+        } else {
+            p = std::realloc(data_, bytes);
+        }
         if (!p) throw std::bad_alloc();
+        mapped_ = mapped_ || (kMapsBlocks && bytes >= kMappedBlockBytes);
         data_ = static_cast<T*>(p);
         cap_ = n;
-        advise_huge_pages(data_, n * sizeof(T));
     }
 
     T* data() { return data_; }
@@ -87,8 +105,17 @@ public:
     std::size_t capacity() const { return cap_; }
 
 private:
+    void release() {
+        if (mapped_) unmap_block(data_, cap_ * sizeof(T));
+        else std::free(data_);
+        data_ = nullptr;
+        cap_ = 0;
+        mapped_ = false;
+    }
+
     T* data_ = nullptr;
     std::size_t cap_ = 0;
+    bool mapped_ = false;  // data_ is a mapping (map_block), else malloc's
 };
 
 class TetStore {

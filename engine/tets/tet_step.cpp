@@ -169,6 +169,10 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         },
         [&] { control.emplace(domain, co); });
     const ControlSpace& space = *control;
+    // The domain holds its own copies now: free these before the refinement grows it.
+    xyz = {};
+    local = {};
+    to_domain = {};
     beat(options.pulse);
 
     std::vector<double> sizes;
@@ -176,7 +180,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
         refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr,
                         options.pulse);
     if (options.relaxation.iterations > 0) {
-        stats.relaxation = relax_points(domain, recovered, sizes, par, options.relaxation, options.pulse);
+        stats.relaxation = relax_points(domain, std::move(recovered), sizes, par, options.relaxation, options.pulse);
         recovered = RecoveredTets();
     }
     if (options.part_done) options.part_done();  // refinement and relaxation

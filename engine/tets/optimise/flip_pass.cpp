@@ -60,14 +60,15 @@ private:
 };
 static_assert(FlipPlan::kMaxOld + 4 * FlipPlan::kMaxNew < 256, "StoredPlan counts ids in a byte");
 
+// A sweep's first round holds one per bad tet: what lives only for a round (the plan's
+// claims) is kept beside them, in one array per round.
 struct Candidate {
     index_t tet;
     std::array<index_t, 4> vertices;  // to tell whether the slot still holds this tet
     double collapse;
     std::uint32_t planned = 0;  // round whose start the plan describes (0: never)
     bool has_plan = false;
-    StoredPlan plan;              // allocated when a plan is first found: most candidates get none
-    std::vector<index_t> claims;  // the tets applying the plan writes: its old tets and their neighbours
+    StoredPlan plan;  // allocated when a plan is first found: most candidates get none
 };
 
 // Runs f(0) .. f(n - 1), in parallel unless n is small: late rounds and focused passes have a
@@ -157,16 +158,20 @@ bool still_there(const TetDomain& dom, const Candidate& c) {
 }
 
 // The old tets and the tets around them whose neighbour codes applying the plan rewrites, as
-// they are now: a flip next to a waiting plan changes its neighbours but not the plan.
-void plan_claims(const TetDomain& dom, std::span<const index_t> old_tets, std::vector<index_t>& claims) {
-    claims.clear();
+// they are now (a flip next to a waiting plan changes its neighbours but not the plan), written
+// from `out` on: at most kClaimsPerOldTet per old tet. Returns how many.
+constexpr std::size_t kClaimsPerOldTet = 5;
+static_assert(kClaimsPerOldTet * FlipPlan::kMaxOld < 256, "a plan's claims are counted in a byte");
+std::size_t plan_claims(const TetDomain& dom, std::span<const index_t> old_tets, index_t* out) {
+    std::size_t n = 0;
     for (const index_t t : old_tets) {
-        claims.push_back(t);
+        out[n++] = t;
         for (index_t f = 0; f < 4; ++f) {
-            const index_t n = dom.tets.neighbour(4 * t + f);
-            if (n != delaunay::kNoAdjacent) claims.push_back(n >> 2);
+            const index_t code = dom.tets.neighbour(4 * t + f);
+            if (code != delaunay::kNoAdjacent) out[n++] = code >> 2;
         }
     }
+    return n;
 }
 
 // `q`: the collapse of every slot (live ones).
@@ -206,14 +211,6 @@ std::vector<Candidate> bad_tets(const TetDomain& dom, double threshold, const st
     return out;
 }
 
-// resize() for per-slot arrays that grow a little every round: an eighth more room at a time
-// instead of std::vector's doubling, whose unused half would set the step's memory peak.
-template <class T>
-void grow(std::vector<T>& v, std::size_t n, T value) {
-    if (n > v.capacity()) v.reserve(std::max(n, v.capacity() + v.capacity() / 8));
-    v.resize(n, value);
-}
-
 }  // namespace
 
 FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, int max_edge_ring, double mean,
@@ -237,19 +234,30 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                           });
     }
     std::vector<Candidate> cands = bad_tets(dom, threshold, active, q);
-    std::vector<std::size_t> pending(cands.size());
-    for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = i;
+    std::vector<index_t> pending(cands.size());
+    for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = static_cast<index_t>(i);
     std::vector<std::uint8_t> alive;
     std::vector<std::uint32_t> claimed;  // round stamp of the round that took the tet
     std::vector<std::uint32_t> written;  // last round whose flips rewrote the slot's vertex row (0: none)
-    std::vector<std::size_t> taken, waiting;
+    std::vector<index_t> taken, waiting;
     const index_t spare_per_move = static_cast<index_t>(max_extra_slots(max_edge_ring));
+    // Each candidate is applied at most once: room for every slot the sweep can add, reserved
+    // now, so that the per-slot arrays never move as they grow (a move holds the old and the
+    // new array at once, which set the sweep's memory peak).
+    const std::size_t most_slots = std::size_t{dom.tets.size()} + std::size_t{spare_per_move} * cands.size();
+    q.reserve(most_slots);
+    written.reserve(most_slots);
+    claimed.reserve(most_slots);
+    // The round's claims: pending[i]'s are claims[claim_at[i] .. claim_at[i] + claim_count[i]).
+    std::vector<std::size_t> claim_at;
+    std::vector<std::uint8_t> claim_count;
+    std::vector<index_t> claims;
 
     while (!pending.empty()) {
         beat(pulse);
         ++counts.rounds;
         const auto stamp = static_cast<std::uint32_t>(counts.rounds);
-        grow(written, dom.tets.size(), std::uint32_t{0});
+        written.resize(dom.tets.size(), 0);
         alive.assign(pending.size(), 0);
         // A plan stays valid while no flip rewrote one of its old tets: it depends on their
         // vertex rows and collapses alone (points do not move in a sweep, and applying reads
@@ -263,9 +271,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                 c.planned != 0 && c.has_plan &&
                 std::none_of(c.plan.old_tets().begin(), c.plan.old_tets().end(),
                              [&](index_t t) { return written[t] >= c.planned; });
-            if (valid) {
-                plan_claims(dom, c.plan.old_tets(), c.claims);  // its neighbours may be new tets
-            } else {
+            if (!valid) {
                 if (!still_there(dom, c)) return;
                 c.planned = stamp;
                 TetShells shells;
@@ -276,22 +282,33 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                                   : best_mean_flip(dom, c.tet, shells, min_gain, mean, mean_floor, slot_collapse,
                                                    found);
                 // Only a candidate with a plan stays pending.
-                if (c.has_plan) {
-                    c.plan.store(found);
-                    plan_claims(dom, c.plan.old_tets(), c.claims);
-                }
+                if (c.has_plan) c.plan.store(found);
             }
             alive[i] = c.has_plan;
+        });
+        // Claims of every plan, a kept one's too: its neighbours may be new tets.
+        claim_at.resize(pending.size());
+        std::size_t room = 0;
+        for (std::size_t i = 0; i < pending.size(); ++i) {
+            claim_at[i] = room;
+            if (alive[i]) room += kClaimsPerOldTet * cands[pending[i]].plan.old_tets().size();
+        }
+        claims.resize(room);
+        claim_count.assign(pending.size(), 0);
+        for_each_index(pending.size(), [&](std::size_t i) {
+            if (alive[i])
+                claim_count[i] = static_cast<std::uint8_t>(
+                    plan_claims(dom, cands[pending[i]].plan.old_tets(), claims.data() + claim_at[i]));
         });
 
         // Worst first; a candidate whose claims meet a taken one's waits for the next round
         // (two flips that share no claimed tet write disjoint slots and neighbour codes).
-        grow(claimed, dom.tets.size(), std::uint32_t{0});
+        claimed.resize(dom.tets.size(), 0);
         taken.clear();
         waiting.clear();
         for (std::size_t i = 0; i < pending.size(); ++i) {
             if (!alive[i]) continue;
-            const auto& fp = cands[pending[i]].claims;
+            const std::span<const index_t> fp(claims.data() + claim_at[i], claim_count[i]);
             if (std::any_of(fp.begin(), fp.end(), [&](index_t t) { return claimed[t] == stamp; })) {
                 waiting.push_back(pending[i]);
                 continue;
@@ -305,7 +322,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
         dom.tets.reserve(base + spare_total);
         dom.tets.set_size(base + static_cast<index_t>(spare_total));
         for (index_t s = base; s < dom.tets.size(); ++s) std::fill_n(dom.tets.vertex(s), 4, kFreeSlot);
-        grow(q, dom.tets.size(), std::numeric_limits<double>::infinity());
+        q.resize(dom.tets.size(), std::numeric_limits<double>::infinity());
 
         for_each_index(taken.size(), [&](std::size_t k) {
             std::array<index_t, FlipPlan::kMaxNew> spare{};
@@ -318,7 +335,7 @@ FlipSweepCounts flip_sweep(TetDomain& dom, double threshold, double min_gain, in
                 q[slot] = collapse_of(dom, plan.new_tets[j]);
             }
         });
-        for (std::size_t k : taken) {
+        for (index_t k : taken) {
             const StoredPlan& plan = cands[k].plan;
             for (index_t t : plan.old_tets()) written[t] = stamp;
             for (index_t p : plan.new_points()) changed[p] = 1;

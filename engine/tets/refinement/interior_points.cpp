@@ -176,11 +176,13 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
 std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t> faces, const ControlSpace& space,
                                       ProposalMemo& memo, const FarLattice& lattice) {
     constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
-    const std::vector<ProposalMemo::Entry>& before = memo.entries;
-    // Filled in the parallel loops below (a slot of `out` only where ok): no serial zeroing.
+    // Each array lives only as long as it is needed: in the first rounds, with tens of
+    // thousands of active faces, these arrays set the refinement's memory peak.
+    std::vector<ProposalMemo::Entry> before;
+    before.swap(memo.entries);
+    // Filled in the parallel loops below: no serial zeroing.
     UninitVector<ProposalMemo::Entry> now(faces.size());
-    UninitVector<Candidate> out(faces.size());
-    std::vector<std::uint8_t> ok(faces.size(), 0), known(faces.size(), 0);
+    std::vector<std::uint8_t> known(faces.size(), 0);
     const double far = space.far_size();
     // Ideal points that snap to a lattice node if the node passes far_and_clear: the node, and
     // the faces' positions in `faces`. Several faces of a round propose the same node, and the
@@ -238,6 +240,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
         }
         memo.reused_total.fetch_add(reused, std::memory_order_relaxed);
     });
+    before = {};
     std::vector<index_t> asking = kept_indices(faces.size(), [&](std::size_t i) { return at_node[i] != 0; });
     const auto node_less = [&](index_t i, index_t j) {
         const Vec3 &a = node_of[i], &b = node_of[j];
@@ -265,6 +268,13 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
             }
         }
     });
+    node_of = {};
+    at_node = {};
+    asking = {};
+    run_begin = {};
+    // Filled where ok (a slot only where ok): no serial zeroing.
+    UninitVector<Candidate> out(faces.size());
+    std::vector<std::uint8_t> ok(faces.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
             if (!known[i]) continue;
@@ -280,6 +290,7 @@ std::vector<Candidate> propose_points(const MeshView& m, std::span<const index_t
     });
     // Faces come in increasing order, so the entries stay sorted for the next round's search.
     memo.entries = kept_items(now, [&](std::size_t i) { return known[i] != 0; });
+    now = {};
     return kept_items(out, [&](std::size_t i) { return ok[i] != 0; });
 }
 
@@ -426,14 +437,7 @@ bool corner_within(const MeshView& m, const Candidate& c, double radius) {
 std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& existing, double factor,
                                    const MeshView* mesh) {
     const std::size_t n = c.size();
-    std::vector<double> cx(n), cy(n), cz(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-            cx[i] = c[i].p[0];
-            cy[i] = c[i].p[1];
-            cz[i] = c[i].p[2];
-        }
-    });
+    const auto place = [&](std::size_t i) { return Vec3{c[i].p[0], c[i].p[1], c[i].p[2]}; };
     std::vector<index_t> kept;
     if (!n) return kept;
     GrowingPoints::Impl& points = *existing.impl_;
@@ -443,7 +447,7 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) {
             if (mesh && corner_within(*mesh, c[i], factor * c[i].h)) continue;
-            free_of_points[i] = points.empty_within({cx[i], cy[i], cz[i]}, factor * c[i].h) ? 1 : 0;
+            free_of_points[i] = points.empty_within(place(i), factor * c[i].h) ? 1 : 0;
         }
     });
     // Among candidates: greedy in order, so earlier ones win whatever the thread count. Only the
@@ -455,9 +459,9 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
     std::vector<double> fx(free.size()), fy(free.size()), fz(free.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, free.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
-            fx[k] = cx[free[k]];
-            fy[k] = cy[free[k]];
-            fz[k] = cz[free[k]];
+            fx[k] = c[free[k]].p[0];
+            fy[k] = c[free[k]].p[1];
+            fz[k] = c[free[k]].p[2];
         }
     });
     const PointIndex cands(fx, fy, fz);
@@ -468,7 +472,7 @@ std::vector<index_t> select_points(std::span<const Candidate> c, GrowingPoints& 
         std::vector<std::pair<index_t, double>> near;
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
             const index_t i = free[k];
-            cands.within_unordered({cx[i], cy[i], cz[i]}, factor * c[i].h, near);
+            cands.within_unordered(place(i), factor * c[i].h, near);
             for (const auto& hit : near)
                 if (hit.first < k) earlier[k].push_back(hit.first);
         }

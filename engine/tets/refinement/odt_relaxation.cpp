@@ -89,8 +89,8 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 // are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
 // so the way between them is short and inside the region. Points that fail that too (none on
 // the reference cases) are left without tets. Returns how many needed the second walk.
-index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts, const Pulse& pulse) {
-    const index_t fixed = recovered.points, n = dom.point_count();
+index_t reinsert(TetDomain& dom, delaunay::TetStore&& recovered, index_t fixed, unsigned parts, const Pulse& pulse) {
+    const index_t n = dom.point_count();
     std::vector<index_t> used;
     {
         // Threads may flag one point at once, always with 1: relaxed stores suffice.
@@ -126,12 +126,13 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts,
     // unused ones never inserted) and the recovered tets while it inserts.
     delaunay::Triangulation tri;
     tri.set_pulse(pulse);
-    tri.adopt(std::move(dom.xyz), recovered.tets.clone());
+    const std::size_t recovered_tets = recovered.size();
+    tri.adopt(std::move(dom.xyz), std::move(recovered));
     dom.xyz.clear();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, order.order.size(), 16384), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) order.order[i] = used[order.order[i]];
     });
-    tri.reserve_tets(std::size_t{recovered.tets.size()} + 8 * used.size() + 1024);
+    tri.reserve_tets(recovered_tets + 8 * used.size() + 1024);
     constexpr index_t kMinPointsPerPart = 64;
     const std::span<const index_t> all(order.order);
     for (std::size_t r = 0; r + 1 < order.round_begin.size(); ++r)
@@ -170,10 +171,10 @@ index_t reinsert(TetDomain& dom, const RecoveredTets& recovered, unsigned parts,
     return static_cast<index_t>(blocked.size());
 }
 
-}  // namespace
-
-RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
-                             const Parallelism& par, const RelaxationOptions& options, const Pulse& pulse) {
+// `spend` (recovered.tets or nullptr): the last insertion takes it instead of a copy.
+RelaxationStats relax(TetDomain& domain, const RecoveredTets& recovered, delaunay::TetStore* spend,
+                      std::span<const double> sizes, const Parallelism& par, const RelaxationOptions& options,
+                      const Pulse& pulse) {
     const auto t0 = Clock::now();
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
@@ -188,7 +189,9 @@ RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, 
         stats.moves += move_points(domain, fixed, sizes);
         beat(pulse);
         if (!options.reinsert_each_iteration && it + 1 < options.iterations) continue;
-        stats.second_walks += reinsert(domain, recovered, par.parts, pulse);
+        const bool last = it + 1 == options.iterations;
+        stats.second_walks += reinsert(domain, spend && last ? std::move(*spend) : recovered.tets.clone(),
+                                       fixed, par.parts, pulse);
         ++stats.reinsertions;
     }
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither
@@ -198,6 +201,18 @@ RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, 
     stats.dropped = before - domain.point_count();
     stats.seconds = seconds_since(t0);
     return stats;
+}
+
+}  // namespace
+
+RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
+                             const Parallelism& par, const RelaxationOptions& options, const Pulse& pulse) {
+    return relax(domain, recovered, nullptr, sizes, par, options, pulse);
+}
+
+RelaxationStats relax_points(TetDomain& domain, RecoveredTets&& recovered, std::span<const double> sizes,
+                             const Parallelism& par, const RelaxationOptions& options, const Pulse& pulse) {
+    return relax(domain, recovered, &recovered.tets, sizes, par, options, pulse);
 }
 
 }  // namespace tubemesh::tets

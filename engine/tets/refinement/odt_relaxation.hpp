@@ -57,5 +57,9 @@ struct RelaxationStats {
 // the input and that count only.
 RelaxationStats relax_points(TetDomain& domain, const RecoveredTets& recovered, std::span<const double> sizes,
                              const Parallelism& par, const RelaxationOptions& options = {}, const Pulse& pulse = {});
+// The same, spending `recovered`: its tets become the last insertion's start instead of a copy
+// of them (the copy and the original together were the relaxation's memory peak).
+RelaxationStats relax_points(TetDomain& domain, RecoveredTets&& recovered, std::span<const double> sizes,
+                             const Parallelism& par, const RelaxationOptions& options = {}, const Pulse& pulse = {});
 
 }  // namespace tubemesh::tets

@@ -40,23 +40,30 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
             beat(pulse);
             const MeshView view{tri.store(), tri.points(), sizes, sources};
-            const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
-            beat(pulse);
-            stats.too_big_left = static_cast<index_t>(faces.size());
-            if (faces.empty()) break;
-            std::vector<Candidate> cand = propose_points(view, faces, space, proposals, lattice);
-            beat(pulse);
-            stats.candidates += cand.size();
-            const std::vector<index_t> keep = select_points(cand, live, options.reject_factor, &view);
-            beat(pulse);
-            stats.rejected_close += cand.size() - keep.size();
-            if (keep.empty()) break;
-            std::vector<double> kept_xyz(3 * keep.size());
-            for (std::size_t i = 0; i < keep.size(); ++i) std::copy_n(cand[keep[i]].p, 3, kept_xyz.begin() + 3 * i);
-            // Along the Hilbert curve over the batch: each walk starts near its point.
-            const std::vector<index_t> along = delaunay::curve_order(kept_xyz);
-            std::vector<Candidate> batch(keep.size());
-            for (std::size_t i = 0; i < keep.size(); ++i) batch[i] = cand[keep[along[i]]];
+            // The round's batch: the kept candidates along the Hilbert curve over them (each walk
+            // starts near its point). What chose them is freed before the kernel inserts them.
+            std::vector<Candidate> batch;
+            {
+                std::vector<Candidate> cand;
+                {
+                    const std::vector<index_t> faces = active_faces(view, options.size_tolerance, memo);
+                    beat(pulse);
+                    stats.too_big_left = static_cast<index_t>(faces.size());
+                    if (faces.empty()) break;
+                    cand = propose_points(view, faces, space, proposals, lattice);
+                }
+                beat(pulse);
+                stats.candidates += cand.size();
+                const std::vector<index_t> keep = select_points(cand, live, options.reject_factor, &view);
+                beat(pulse);
+                stats.rejected_close += cand.size() - keep.size();
+                if (keep.empty()) break;
+                std::vector<double> kept_xyz(3 * keep.size());
+                for (std::size_t i = 0; i < keep.size(); ++i) std::copy_n(cand[keep[i]].p, 3, kept_xyz.begin() + 3 * i);
+                const std::vector<index_t> along = delaunay::curve_order(kept_xyz);
+                batch.resize(keep.size());
+                for (std::size_t i = 0; i < keep.size(); ++i) batch[i] = cand[keep[along[i]]];
+            }
 
             const index_t base = tri.point_count();
             std::vector<double> xyz(3 * batch.size());
@@ -71,15 +78,16 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 sources.push_back(c.source);
             }
             for (std::size_t i = 0; i < batch.size(); ++i) tri.set_walk_start(ids[i], batch[i].tet);
-            tri.reserve_tets(std::size_t{tri.store().size()} + 8 * batch.size() + 1024);
+            batch = {};
+            tri.reserve_tets(std::size_t{tri.store().size()} + 8 * ids.size() + 1024);
             const std::size_t blocked_before = tri.blocked().size(), dup_before = tri.duplicates().size();
             tri.insert(ids, parts, options.min_points_per_part);
             // Only inserted points count as existing for the next round's distance test.
-            std::vector<std::uint8_t> dead(batch.size(), 0);
+            std::vector<std::uint8_t> dead(ids.size(), 0);
             for (std::size_t k = blocked_before; k < tri.blocked().size(); ++k) dead[tri.blocked()[k] - base] = 1;
             for (std::size_t k = dup_before; k < tri.duplicates().size(); ++k) dead[tri.duplicates()[k].first - base] = 1;
             std::size_t added = 0;
-            for (std::size_t i = 0; i < batch.size(); ++i)
+            for (std::size_t i = 0; i < ids.size(); ++i)
                 if (!dead[i]) {
                     live.append(std::span<const double>(xyz).subspan(3 * i, 3));
                     ++added;

@@ -687,4 +687,64 @@ TEST(FarLattice, FarPointsAreLatticeNodesAndRaiseTheMean) {
     EXPECT_GT(mean_q, plain_mean_q + 0.02);
 }
 
+// The far field first: in a box whose front is twice finer than S, the lattice nodes where h
+// is S and the front is beyond the clearance go in before the first round (each a node of the
+// body-centred cubic lattice up to its tiny offset, at least the clearance from every front
+// point), the advancing front then needs fewer rounds, the mean collapse does not fall and the
+// point count stays within a tenth; and the mesh is the same at 1 and 2 threads.
+TEST(FarLattice, FarFieldFirstInsertsTheNodesBeforeTheRounds) {
+    const auto run = [](bool first, unsigned threads, RefineStats& s, double& mean_q) {
+        std::vector<double> x, y, z;
+        box_surface(3.0, 3.0, 3.0, 0.125, x, y, z);
+        TetDomain d = make_domain(x, y, z, delaunay::delaunay(x, y, z, Parallelism{1, 1}).tets);
+        ControlSpaceOptions co;
+        co.far_size = 0.25;
+        const ControlSpace cs(d, co);
+        RefineOptions o;
+        o.far_field_first = first;
+        const index_t first_new = d.point_count();
+        const Parallelism par{threads, 2};
+        const auto limit = limit_threads(par);
+        s = refine_interior(d, cs, par, o);
+        mean_q = size_report(d, cs, o.reject_factor, first_new).mean_q;
+        if (first) {
+            const double a = o.lattice_spacing * cs.far_size();
+            for (index_t p = first_new; p < first_new + s.far_field_first; ++p) {
+                const double* c = d.point(p);
+                bool corner = true, centre = true;
+                for (int k = 0; k < 3; ++k) {
+                    const double u = c[k] / a;
+                    corner = corner && std::abs(u - std::round(u)) < 1e-4;
+                    centre = centre && std::abs(u - std::floor(u) - 0.5) < 1e-4;
+                }
+                EXPECT_TRUE(corner || centre) << "point " << p;
+                double nearest = 1e300;
+                for (index_t f = 0; f < d.front_points; ++f) {
+                    const double* q = d.point(f);
+                    const double dx = c[0] - q[0], dy = c[1] - q[1], dz = c[2] - q[2];
+                    nearest = std::min(nearest, std::sqrt(dx * dx + dy * dy + dz * dz));
+                }
+                EXPECT_GE(nearest, 0.99 * o.lattice_clearance * cs.far_size()) << "point " << p;
+            }
+        }
+        return d;
+    };
+    RefineStats with, without, with2;
+    double mean_with = 0, mean_without = 0, mean_with2 = 0;
+    const TetDomain a = run(true, 1, with, mean_with);
+    const TetDomain b = run(false, 1, without, mean_without);
+    const TetDomain c = run(true, 2, with2, mean_with2);
+    std::printf("far field first: %llu of %llu points, %u rounds, mean collapse %.4f; without: %llu points, %u rounds, %.4f\n",
+                (unsigned long long)with.far_field_first, (unsigned long long)with.inserted, with.rounds, mean_with,
+                (unsigned long long)without.inserted, without.rounds, mean_without);
+    EXPECT_GT(with.far_field_first, with.inserted / 3);
+    EXPECT_EQ(without.far_field_first, 0u);
+    EXPECT_LT(with.rounds, without.rounds);
+    EXPECT_GE(mean_with, mean_without - 0.005);
+    EXPECT_NEAR(double(with.inserted), double(without.inserted), 0.1 * double(without.inserted));
+    EXPECT_EQ(a.xyz, c.xyz);
+    EXPECT_TRUE(std::equal(a.tets.vertices().begin(), a.tets.vertices().end(), c.tets.vertices().begin(),
+                           c.tets.vertices().end()));
+}
+
 }  // namespace

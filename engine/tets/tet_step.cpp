@@ -178,7 +178,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     std::vector<double> sizes;
     stats.refine =
         refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr,
-                        options.pulse);
+                        options.pulse, options.relaxation.iterations > 0 ? &recovered : nullptr);
     if (options.relaxation.iterations > 0) {
         stats.relaxation = relax_points(domain, std::move(recovered), sizes, par, options.relaxation, options.pulse);
         recovered = RecoveredTets();

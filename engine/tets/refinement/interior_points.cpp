@@ -86,6 +86,52 @@ Vec3 jittered(const Vec3& node, double a) {
 
 }  // namespace
 
+std::vector<double> far_lattice_points(const double* lo, const double* hi, const ControlSpace& space,
+                                       const FarLattice& lattice) {
+    std::vector<double> out;
+    const double far = space.far_size();
+    if (!(lattice.spacing > 0) || !(far > 0)) return out;
+    const double a = lattice.spacing * far;
+    // Corners a*i and centres a*(i + 0.5) per axis, computed as nearest_bcc_node does, so that a
+    // node a face proposes later is this very point. The nodes are only counted here and made
+    // where they are tested: a box much larger than the solid costs no node array.
+    struct Grid {
+        double shift;
+        std::int64_t first[3], count[3];
+        std::size_t size() const { return std::size_t(count[0]) * std::size_t(count[1]) * std::size_t(count[2]); }
+    };
+    Grid grid[2] = {{0.0, {}, {}}, {0.5, {}, {}}};
+    for (Grid& g : grid)
+        for (int d = 0; d < 3; ++d) {
+            g.first[d] = static_cast<std::int64_t>(std::ceil(lo[d] / a - g.shift));
+            g.count[d] =
+                std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(hi[d] / a - g.shift)) - g.first[d] + 1);
+        }
+    const auto node = [&](std::size_t n) {
+        const Grid& g = n < grid[0].size() ? grid[0] : grid[1];
+        if (n >= grid[0].size()) n -= grid[0].size();
+        const std::size_t i = n % std::size_t(g.count[0]), j = n / std::size_t(g.count[0]) % std::size_t(g.count[1]),
+                          k = n / std::size_t(g.count[0]) / std::size_t(g.count[1]);
+        return Vec3{a * (double(g.first[0] + std::int64_t(i)) + g.shift), a * (double(g.first[1] + std::int64_t(j)) + g.shift),
+                    a * (double(g.first[2] + std::int64_t(k)) + g.shift)};
+    };
+    const std::size_t total = grid[0].size() + grid[1].size();
+    std::vector<std::uint8_t> keep(total, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t n = r.begin(); n < r.end(); ++n) {
+            const Vec3 v = node(n);
+            const double q[3] = {v.x, v.y, v.z};
+            keep[n] = space.far_and_clear(q, lattice.clearance * far) ? 1 : 0;
+        }
+    });
+    for (std::size_t n = 0; n < total; ++n)
+        if (keep[n]) {
+            const Vec3 p = jittered(node(n), a);
+            out.insert(out.end(), {p.x, p.y, p.z});
+        }
+    return out;
+}
+
 CarriedSize carried_size(const MeshView& m, const index_t* v, const double* p, const ControlSpace& space) {
     CarriedSize best{space.far_size(), kNoIndex};
     for (int k = 0; k < 4; ++k) {

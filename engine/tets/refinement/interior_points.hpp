@@ -82,6 +82,13 @@ struct FarLattice {
     double clearance = 0;  // least distance from a lattice point to the nearest front node, over S
 };
 
+// The far-field lattice's nodes in the box [lo, hi] where the lattice replaces ideal points (h
+// is S and no front node lies within the clearance: ControlSpace::far_and_clear), each with
+// its offset: the very points propose_points snaps to there. Nodes in a fixed order (x
+// fastest, corners before centres), 3 coordinates each; empty without the lattice. Parallel.
+std::vector<double> far_lattice_points(const double* lo, const double* hi, const ControlSpace& space,
+                                       const FarLattice& lattice);
+
 // The target size at p carried by the mesh points v[0..4) (a tet's corners near p): the control
 // space's graded minimum min(S, s_i + (g - 1) |p - x_i|) taken over the front nodes i that
 // decide h at those points (MeshView::source) instead of over p's nearest front nodes, so no

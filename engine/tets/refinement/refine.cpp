@@ -1,6 +1,7 @@
 #include "engine/tets/refinement/refine.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "engine/core/timing.hpp"
@@ -10,9 +11,97 @@
 #include "engine/tets/refinement/interior_points.hpp"
 
 namespace tubemesh::tets {
+namespace {
+
+// The live tets of a kernel store (no free slots; constrained mode has no ghosts), in slot
+// order, with their adjacency.
+delaunay::TetStore live_copy(const delaunay::TetStore& from) {
+    const index_t n = from.size();
+    std::vector<index_t> slot(n, kNoIndex);
+    index_t live = 0;
+    for (index_t t = 0; t < n; ++t)
+        if (from.vertex(t)[0] != delaunay::kFreeSlot) slot[t] = live++;
+    delaunay::TetStore out;
+    out.reserve(live);
+    out.set_size(live);
+    for (index_t t = 0; t < n; ++t) {
+        if (slot[t] == kNoIndex) continue;
+        std::copy_n(from.vertex(t), 4, out.vertex(slot[t]));
+        for (index_t f = 0; f < 4; ++f) {
+            const index_t code = from.neighbour(4 * t + f);
+            out.neighbour(4 * slot[t] + f) = code == delaunay::kNoAdjacent ? code : 4 * slot[code >> 2] + (code & 3);
+        }
+    }
+    return out;
+}
+
+// The far field's lattice nodes inserted at once (RefineOptions::far_field_first), in BRIO
+// rounds so that the first cavities, which reach across the unrefined core, are few. Their h is
+// the far size; nodes outside the region or behind a concave part of the front are skipped by
+// the kernel (the advancing front reaches them later). Returns the points inserted.
+std::uint64_t insert_far_field(delaunay::Triangulation& tri, GrowingPoints& live, std::vector<double>& sizes,
+                               std::vector<index_t>& sources, const ControlSpace& space, const FarLattice& lattice,
+                               unsigned parts, const RefineOptions& options, const Pulse& pulse) {
+    double lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {
+        lo[d] = std::numeric_limits<double>::infinity();
+        hi[d] = -lo[d];
+    }
+    const std::span<const double> pts = tri.points();
+    for (std::size_t i = 0; 3 * i < pts.size(); ++i)
+        for (int d = 0; d < 3; ++d) {
+            lo[d] = std::min(lo[d], pts[3 * i + d]);
+            hi[d] = std::max(hi[d], pts[3 * i + d]);
+        }
+    const std::vector<double> nodes = far_lattice_points(lo, hi, space, lattice);
+    beat(pulse);
+    const std::size_t m = nodes.size() / 3;
+    if (m == 0) return 0;
+    std::vector<double> x(m), y(m), z(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        x[i] = nodes[3 * i];
+        y[i] = nodes[3 * i + 1];
+        z[i] = nodes[3 * i + 2];
+    }
+    const delaunay::InsertionOrder order = delaunay::brio_hilbert_order(x, y, z);
+    const index_t base = tri.point_count();
+    std::vector<double> xyz(3 * m);
+    std::vector<index_t> ids(m);
+    for (std::size_t k = 0; k < m; ++k) {
+        const index_t i = order.order[k];
+        xyz[3 * k] = x[i];
+        xyz[3 * k + 1] = y[i];
+        xyz[3 * k + 2] = z[i];
+        ids[k] = base + static_cast<index_t>(k);
+    }
+    tri.add_points(xyz, ids);
+    sizes.insert(sizes.end(), m, space.far_size());
+    sources.insert(sources.end(), m, kNoIndex);
+    tri.reserve_tets(std::size_t{tri.store().size()} + 8 * m + 1024);
+    const std::size_t blocked_before = tri.blocked().size(), dup_before = tri.duplicates().size();
+    const std::span<const index_t> all(ids);
+    for (std::size_t r = 0; r + 1 < order.round_begin.size(); ++r) {
+        tri.insert(all.subspan(order.round_begin[r], order.round_begin[r + 1] - order.round_begin[r]), parts,
+                   options.min_points_per_part);
+        beat(pulse);
+        if (options.round_done) options.round_done(tri.live_tets());
+    }
+    std::vector<std::uint8_t> dead(m, 0);
+    for (std::size_t k = blocked_before; k < tri.blocked().size(); ++k) dead[tri.blocked()[k] - base] = 1;
+    for (std::size_t k = dup_before; k < tri.duplicates().size(); ++k) dead[tri.duplicates()[k].first - base] = 1;
+    std::vector<double> in;
+    in.reserve(xyz.size());
+    for (std::size_t k = 0; k < m; ++k)
+        if (!dead[k]) in.insert(in.end(), {xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]});
+    live.append(in);
+    return in.size() / 3;
+}
+
+}  // namespace
 
 RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
-                            const RefineOptions& options, std::vector<double>* sizes_out, const Pulse& pulse) {
+                            const RefineOptions& options, std::vector<double>* sizes_out, const Pulse& pulse,
+                            RecoveredTets* relax_base) {
     const auto t0 = Clock::now();
     if (domain.tets.size() == 0) throw Error("refinement: the tet domain has no tetrahedra");
     const unsigned parts = par.parts;
@@ -37,6 +126,11 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         for (std::size_t v = 0; v < sizes.size(); ++v)
             sizes[v] = std::min(space.far_size(), space.term(sources[v], tri.points().data() + 3 * v));
         const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
+        if (options.far_field_first)
+            stats.far_field_first = insert_far_field(tri, live, sizes, sources, space, lattice, parts, options, pulse);
+        // The mesh after the far field, for the relaxation (kernel ids until the end renumbers).
+        const bool far_base = relax_base && stats.far_field_first > 0;
+        if (far_base) *relax_base = {live_copy(tri.store()), 0};
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
             beat(pulse);
             const MeshView view{tri.store(), tri.points(), sizes, sources};
@@ -116,6 +210,14 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 if (to[v] != kNoIndex) (*sizes_out)[to[v]] = sizes[v];
         }
         stats.inserted = next - first_new;
+        if (far_base) {
+            // Every point of that mesh is in the result (the kernel never removes a point), the far
+            // field's right after the points there before refinement.
+            delaunay::TetStore& base = relax_base->tets;
+            for (index_t t = 0; t < base.size(); ++t)
+                for (int i = 0; i < 4; ++i) base.vertex(t)[i] = to[base.vertex(t)[i]];
+            relax_base->points = first_new + static_cast<index_t>(stats.far_field_first);
+        }
     }
     stats.tets = domain.tets.size();
     stats.seconds = seconds_since(t0);

@@ -28,6 +28,12 @@ struct RefineOptions {
     // the far field's mean collapse rises for few more elements (bench/results/tuning-notes.md).
     double lattice_spacing = 1.12;
     double lattice_clearance = 0.85;
+    // Insert the far-field lattice's nodes (FarLattice) all at once, in BRIO rounds, before the
+    // first round: the advancing front then fills only the graded layers between the front and
+    // the far field, in few rounds, and its cavities no longer reach across the unrefined core.
+    // The same nodes the faces would snap to one layer at a time (on the dam block at S 0.3
+    // they are most of the points); no effect without the lattice. Default on.
+    bool far_field_first = true;
     // Kernel passes with fewer points per part run serially; 256.
     index_t min_points_per_part = 256;
     // Upper bound on rounds (each adds a layer of points); 200.
@@ -42,6 +48,7 @@ struct RefineStats {
     std::uint64_t candidates = 0;         // proposed inside the region
     std::uint64_t rejected_close = 0;     // too close to a point or an accepted candidate
     std::uint64_t inserted = 0;           // new points in the mesh
+    std::uint64_t far_field_first = 0;    // of which inserted before the first round (far_field_first)
     std::uint64_t blocked = 0;            // skipped by the kernel (cavity would lose the point's tet)
     std::uint64_t duplicates = 0;
     std::uint64_t shrunk_cavities = 0;    // cavities made star-shaped by shrinking
@@ -61,8 +68,12 @@ struct RefineStats {
 // at the points there before, each inserted point's from its candidate), for the relaxation.
 // The kernel inserts with par.parts parts, in the caller's oneTBB arena: the same input and part
 // count give the same mesh whatever the thread count.
+// With `relax_base` (the recovered tets, for the relaxation): when the far field went in first,
+// it becomes the mesh as it was right after that (ids as in the result), whose points, the far
+// field's included, the relaxation then keeps where they are: it moves and inserts again only
+// the points the advancing front placed.
 RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
                             const RefineOptions& options = {}, std::vector<double>* sizes = nullptr,
-                            const Pulse& pulse = {});
+                            const Pulse& pulse = {}, RecoveredTets* relax_base = nullptr);
 
 }  // namespace tubemesh::tets

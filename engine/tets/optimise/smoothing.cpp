@@ -210,13 +210,6 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
         if (dom.movable(p) && !inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);
     std::vector<std::uint32_t> colour(points, kNoIndex);
     std::vector<std::uint8_t> moved, again(points, 0);
-    // A point tried at tick tried_at[p] whose star has had no move since (changed_at[p] below
-    // it) would meet the same star, collapses and parameters again, so it would not move
-    // again: its trial is skipped (it stays in the colouring, which keeps every other point's
-    // colour and so the order of the moves). A tick is a colour class; the parameters change
-    // when the polish sweeps begin, so trials before `mode_from` do not count.
-    std::vector<std::uint32_t> tried_at(points, 0), changed_at(points, 0);
-    std::uint32_t tick = 0, mode_from = 1;
     std::vector<index_t> moved_points;
     std::vector<double> worst;
     tbb::enumerable_thread_specific<StarScratch> star_scratch;
@@ -226,24 +219,18 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
     for (int sweep = 0; sweep < total_sweeps && !todo.empty(); ++sweep) {
         const bool polish = sweep >= sweeps;
         const double below = polish ? std::min(threshold, kPolishBelow) : threshold;
-        if (polish && sweep == sweeps) mode_from = tick + 1;
         const auto classes = colour_points(dom, inc, todo, colour);
         counts.colours = std::max<std::uint64_t>(counts.colours, classes.size());
         moved_points.clear();
         for (const auto& pts : classes) {
             beat(pulse);
-            ++tick;
             moved.assign(pts.size(), 0);
             worst.assign(pts.size(), 0.0);
             const auto move_range = [&](const tbb::blocked_range<std::size_t>& r) {
                 auto& scratch = star_scratch.local();
-                for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                    const index_t p = pts[i];
-                    if (tried_at[p] >= mode_from && changed_at[p] < tried_at[p]) continue;
-                    tried_at[p] = tick;
-                    moved[i] = try_move(dom, p, inc.of(p), below, min_gain, floor, scratch, worst[i], polish,
+                for (std::size_t i = r.begin(); i != r.end(); ++i)
+                    moved[i] = try_move(dom, pts[i], inc.of(pts[i]), below, min_gain, floor, scratch, worst[i], polish,
                                         targets == SmoothingTargets::AscentForFair, collapses);
-                }
             };
             // A small colour (most of the polish sweeps' and focused passes') runs on this
             // thread: a parallel job for a few points costs more than it saves, much more on
@@ -258,8 +245,6 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
                 if (!moved[i]) continue;
                 moved_points.push_back(pts[i]);
                 changed[pts[i]] = 1;
-                for (index_t t : inc.of(pts[i]))
-                    for (index_t k = 0; k < 4; ++k) changed_at[dom.tets.vertex(t)[k]] = tick;
                 // Later sweeps: the free points of the stars of the points that moved (only
                 // of poor stars once the polish sweeps come).
                 if (sweep + 1 < sweeps || worst[i] < kPolishBelow)

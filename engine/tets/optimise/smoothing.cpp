@@ -203,8 +203,16 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
                               std::vector<double>& collapses, SmoothingTargets targets, const Pulse& pulse) {
     SmoothingCounts counts;
-    const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
+    // No point to try (a late focused pass often has none): the incidence, a pass over every
+    // tet, would be built for nothing.
+    if (active) {
+        const std::size_t first = dom.front_moves() ? 0 : dom.front_points;
+        const std::size_t end = std::min<std::size_t>(active->size(), points);
+        if (first >= end || std::all_of(active->begin() + first, active->begin() + end, [](auto a) { return a == 0; }))
+            return counts;
+    }
+    const Incidence inc = build_incidence(dom);
     std::vector<index_t> todo;
     for (index_t p = dom.front_moves() ? 0 : dom.front_points; p < points; ++p)
         if (dom.movable(p) && !inc.of(p).empty() && (!active || (*active)[p])) todo.push_back(p);

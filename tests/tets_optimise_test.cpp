@@ -24,6 +24,7 @@
 #include "engine/tets/optimise/smoothing.hpp"
 #include "engine/tets/optimise/tet_flips.hpp"
 #include "engine/tets/domain/tet_neighbourhood.hpp"
+#include "engine/tets/optimise/worst_tet_rescue.hpp"
 #include "tests/support/tet_domain_volume.hpp"
 
 namespace {
@@ -591,6 +592,30 @@ TEST(test_tets_optimise, RescueLiftsTetsOfFrontPoints) {
                     s_on.mean_collapse_after, (unsigned long long)s_on.rescued);
     }
     EXPECT_GT(rescued, 0u);
+}
+
+// The rescue keeps every tet's collapse current and compacts it with the store, so the
+// optimisation reads it afterwards instead of computing it again: the same bits as collapse_of.
+TEST(test_tets_optimise, RescueLeavesEveryCollapseCurrent) {
+    std::uint64_t lifted = 0;
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+        TetDomain d = sphere_domain(300, 60, seed);
+        OptimiseOptions no_rescue;
+        no_rescue.rescue_below = 0;
+        optimise(d, no_rescue);
+        std::vector<double> q(d.tets.size());
+        for (index_t t = 0; t < d.tets.size(); ++t) q[t] = collapse_of(d, d.tets.vertex(t)[0], d.tets.vertex(t)[1],
+                                                                        d.tets.vertex(t)[2], d.tets.vertex(t)[3]);
+        std::vector<std::uint8_t> changed(d.point_count(), 0);
+        lifted += rescue_worst_tets(d, 0.45, q, changed).lifted;
+        ASSERT_EQ(q.size(), d.tets.size());
+        for (index_t t = 0; t < d.tets.size(); ++t) {
+            const index_t* v = d.tets.vertex(t);
+            ASSERT_NE(v[0], delaunay::kFreeSlot);
+            ASSERT_EQ(q[t], collapse_of(d, v[0], v[1], v[2], v[3])) << "seed " << seed << ", tet " << t;
+        }
+    }
+    EXPECT_GT(lifted, 0u);
 }
 
 // A new point's cone fills exactly the cavity it replaces: at each tet's centroid and over its

@@ -5,13 +5,14 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace tubemesh::tets {
 
 namespace {
 
-// Fixed chunk sizes: the work is split the same way whatever the thread count, so every
-// chunk's part of the result, and the order the parts are combined in, is fixed.
+// Fixed chunk sizes for the colouring: its work is split the same way whatever the thread
+// count, so every chunk's part of the result, and the order the parts are combined in, is fixed.
 constexpr std::size_t kRowsPerChunk = std::size_t{1} << 18;
 constexpr std::size_t kMaxChunks = 8;
 constexpr std::size_t kPointsPerChunk = 2048;
@@ -24,7 +25,10 @@ Incidence build_incidence(const TetDomain& dom) {
     const std::size_t points = dom.point_count();
     const std::span<const index_t> v = dom.tets.vertices();
     const std::size_t rows = v.size();
-    const std::size_t chunks = std::clamp<std::size_t>(rows / kRowsPerChunk, 1, kMaxChunks);
+    // No more chunks than threads: every chunk costs a pass over all points, and any split
+    // gives the same result (each point's tets in increasing order).
+    const std::size_t threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+    const std::size_t chunks = std::clamp<std::size_t>(rows / kRowsPerChunk, 1, std::min(kMaxChunks, threads));
     const auto chunk_begin = [&](std::size_t c) { return rows * c / chunks; };
     // count[c][p]: entries of point p in chunk c; then where chunk c's first one goes.
     std::vector<std::vector<index_t>> count(chunks);

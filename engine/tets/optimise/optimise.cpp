@@ -203,7 +203,6 @@ OptimiseStats run(TetDomain& dom, const OptimiseOptions& o, const Pulse& pulse) 
         const RescueCounts r = rescue_worst_tets(dom, o.rescue_below, collapses, changed);
         s.rescued = r.lifted;
         s.inserted_points = r.inserted;
-        compute_collapses(dom, collapses);  // the rescue compacted the store
         if (s.rescued > 0) {
             // The rescue trades some of the changed tets' sum for their minimum (paper-ex2: a
             // 5-tet shell into 6 tets costs ~1.1 of the sum, 6e-5 of the mean): flips next to

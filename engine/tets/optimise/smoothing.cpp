@@ -84,11 +84,6 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
     const Vec3 normal = slides ? dom.slide_normal[dom.slide_rank[p]] : Vec3{};
     const auto in_plane = [&](const Vec3& d) { return slides ? d - dot(d, normal) * normal : d; };
     const auto aim = [&](const Vec3& target) { return slides ? here + in_plane(target - here) : target; };
-    double reach = 0;
-    for (std::size_t k = 0; k < star.size(); ++k)
-        for (int i = 0; i < 4; ++i)
-            if (i != corners.at[k]) reach += norm(corners.corners[k][i] - here);
-    reach /= 3.0 * static_cast<double>(star.size());
     // The centroid and ODT targets only when a trial reads them (a fair star in an ascent-only
     // sweep does not).
     const bool poor = now.worst < floor;
@@ -162,6 +157,13 @@ bool try_move(TetDomain& dom, index_t p, std::span<const index_t> incident, doub
         const Vec3 g = in_plane(ascent_direction(corners, collapse));
         const double glen = norm(g);
         if (glen > 0) {
+            // The star's mean edge at p, only here where it is read (a poor star's move that
+            // wins above does not need it).
+            double reach = 0;
+            for (std::size_t k = 0; k < star.size(); ++k)
+                for (int i = 0; i < 4; ++i)
+                    if (i != corners.at[k]) reach += norm(corners.corners[k][i] - here);
+            reach /= 3.0 * static_cast<double>(star.size());
             const Vec3 uphill = here + (0.4 * reach / glen) * g;
             for (double step : kUphillSteps)
                 if (!trial(here + step * (uphill - here))) break;
@@ -213,8 +215,16 @@ SmoothingCounts smooth_points(TetDomain& dom, int sweeps, double threshold, doub
                               const std::vector<std::uint8_t>* active, std::vector<std::uint8_t>& changed,
                               std::vector<double>& collapses, SmoothingTargets targets, const Pulse& pulse) {
     SmoothingCounts counts;
-    const Incidence inc = build_incidence(dom);
     const index_t points = dom.point_count();
+    // No point to try (a late focused pass often has none): the incidence, a pass over every
+    // tet, would be built for nothing.
+    if (active) {
+        const std::size_t first = dom.front_moves() ? 0 : dom.front_points;
+        const std::size_t end = std::min<std::size_t>(active->size(), points);
+        if (first >= end || std::all_of(active->begin() + first, active->begin() + end, [](auto a) { return a == 0; }))
+            return counts;
+    }
+    const Incidence inc = build_incidence(dom);
     const index_t from = dom.front_moves() ? 0 : dom.front_points;
     // The points from `from` on with ok(p), in order.
     const auto listed = [&](auto&& ok) {

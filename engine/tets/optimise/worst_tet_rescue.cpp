@@ -236,7 +236,7 @@ RescueCounts rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>
         counts.lifted += lifted_now;
         if (stuck || lifted_now == 0) break;
     }
-    compact_tets(dom);
+    compact_tets(dom, &q);  // every live slot's q is current: the touched ones were recomputed above
     return counts;
 }
 

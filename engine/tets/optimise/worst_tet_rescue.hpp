@@ -23,9 +23,10 @@ struct RescueCounts {
     std::uint64_t inserted = 0;  // of those, by a new point
 };
 
-// `q`: every tet's collapse on entry (kept up to date while it works); it compacts the store at
-// the end, so the caller recomputes q. Inserted points are appended to dom.xyz, and `changed`
-// (one flag per point) grows with them; every point of a changed tet gets changed[p] = 1.
+// `q`: every tet's collapse on entry, kept up to date while it works and compacted with the
+// store at the end: on return q[t] is collapse_of of tet t's row, for every tet. Inserted points
+// are appended to dom.xyz, and `changed` (one flag per point) grows with them; every point of a
+// changed tet gets changed[p] = 1.
 RescueCounts rescue_worst_tets(TetDomain& dom, double bound, std::vector<double>& q,
                                std::vector<std::uint8_t>& changed);
 

@@ -65,6 +65,9 @@ struct TetDomain {
 struct RecoveredTets {
     delaunay::TetStore tets;
     index_t points = 0;
+    // Points [points, points + in_place) of the domain, set by the refinement: the far field it
+    // inserted first, which the relaxation keeps where it is and inserts again before the others.
+    index_t in_place = 0;
 };
 RecoveredTets recovered_tets(const TetDomain& d);
 

@@ -89,7 +89,8 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
 // are in, from a tet of the new mesh at one of the point's old neighbours: the two shared a tet,
 // so the way between them is short and inside the region. Points that fail that too (none on
 // the reference cases) are left without tets. Returns how many needed the second walk.
-index_t reinsert(TetDomain& dom, delaunay::TetStore&& recovered, index_t fixed, unsigned parts, const Pulse& pulse) {
+index_t reinsert(TetDomain& dom, delaunay::TetStore&& recovered, index_t fixed, index_t in_place, unsigned parts,
+                 const Pulse& pulse) {
     const index_t n = dom.point_count();
     std::vector<index_t> used;
     {
@@ -109,18 +110,27 @@ index_t reinsert(TetDomain& dom, delaunay::TetStore&& recovered, index_t fixed, 
     // neighbour rows would only add to the peak while the new mesh is built.
     const std::vector<index_t> old_rows(dom.tets.vertices().begin(), dom.tets.vertices().end());
     dom.tets = delaunay::TetStore();
+    // The points kept in place (the far field) go first, in rounds of their own: the others'
+    // cavities then stay local, as in the refinement.
+    const std::size_t still = static_cast<std::size_t>(
+        std::lower_bound(used.begin(), used.end(), fixed + in_place) - used.begin());
     delaunay::InsertionOrder order;
-    {
-        std::vector<double> x(used.size()), y(used.size()), z(used.size());
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, used.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (const auto& [from, to] : {std::pair<std::size_t, std::size_t>{0, still}, {still, used.size()}}) {
+        const std::size_t m = to - from;
+        std::vector<double> x(m), y(m), z(m);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
             for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                const double* q = dom.point(used[i]);
+                const double* q = dom.point(used[from + i]);
                 x[i] = q[0];
                 y[i] = q[1];
                 z[i] = q[2];
             }
         });
-        order = delaunay::brio_hilbert_order(x, y, z);
+        const delaunay::InsertionOrder part = delaunay::brio_hilbert_order(x, y, z);
+        const index_t offset = static_cast<index_t>(order.order.size());
+        if (order.round_begin.empty()) order.round_begin.push_back(0);
+        for (index_t k : part.order) order.order.push_back(static_cast<index_t>(from) + k);
+        for (std::size_t r = 1; r < part.round_begin.size(); ++r) order.round_begin.push_back(offset + part.round_begin[r]);
     }
     // The kernel holds every point (kernel id = domain id; the free ones not in a tet yet, the
     // unused ones never inserted) and the recovered tets while it inserts.
@@ -179,19 +189,19 @@ RelaxationStats relax(TetDomain& domain, const RecoveredTets& recovered, delauna
     if (options.iterations < 0) throw Error("relaxation: iterations must be 0 or more");
     if (sizes.size() != domain.point_count()) throw Error("relaxation: one size per point expected");
     const index_t fixed = recovered.points;
-    if (fixed > domain.point_count() || fixed < domain.front_points)
+    if (fixed > domain.point_count() || fixed < domain.front_points || recovered.in_place > domain.point_count() - fixed)
         throw Error("relaxation: the recovered mesh is not the start of the domain");
     RelaxationStats stats;
     if (options.iterations == 0) return stats;
     for (int it = 0; it < options.iterations; ++it) {
         ++stats.iterations;
         beat(pulse);
-        stats.moves += move_points(domain, fixed, sizes);
+        stats.moves += move_points(domain, fixed + recovered.in_place, sizes);
         beat(pulse);
         if (!options.reinsert_each_iteration && it + 1 < options.iterations) continue;
         const bool last = it + 1 == options.iterations;
         stats.second_walks += reinsert(domain, spend && last ? std::move(*spend) : recovered.tets.clone(),
-                                       fixed, par.parts, pulse);
+                                       fixed, recovered.in_place, par.parts, pulse);
         ++stats.reinsertions;
     }
     // A point lost in one iteration stays out of the later ones (it has no tet, so it neither

@@ -13,28 +13,6 @@
 namespace tubemesh::tets {
 namespace {
 
-// The live tets of a kernel store (no free slots; constrained mode has no ghosts), in slot
-// order, with their adjacency.
-delaunay::TetStore live_copy(const delaunay::TetStore& from) {
-    const index_t n = from.size();
-    std::vector<index_t> slot(n, kNoIndex);
-    index_t live = 0;
-    for (index_t t = 0; t < n; ++t)
-        if (from.vertex(t)[0] != delaunay::kFreeSlot) slot[t] = live++;
-    delaunay::TetStore out;
-    out.reserve(live);
-    out.set_size(live);
-    for (index_t t = 0; t < n; ++t) {
-        if (slot[t] == kNoIndex) continue;
-        std::copy_n(from.vertex(t), 4, out.vertex(slot[t]));
-        for (index_t f = 0; f < 4; ++f) {
-            const index_t code = from.neighbour(4 * t + f);
-            out.neighbour(4 * slot[t] + f) = code == delaunay::kNoAdjacent ? code : 4 * slot[code >> 2] + (code & 3);
-        }
-    }
-    return out;
-}
-
 // The far field's lattice nodes inserted at once (RefineOptions::far_field_first), in BRIO
 // rounds so that the first cavities, which reach across the unrefined core, are few. Their h is
 // the far size; nodes outside the region or behind a concave part of the front are skipped by
@@ -128,9 +106,6 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         const FarLattice lattice{options.lattice_spacing, options.lattice_clearance};
         if (options.far_field_first)
             stats.far_field_first = insert_far_field(tri, live, sizes, sources, space, lattice, parts, options, pulse);
-        // The mesh after the far field, for the relaxation (kernel ids until the end renumbers).
-        const bool far_base = relax_base && stats.far_field_first > 0;
-        if (far_base) *relax_base = {live_copy(tri.store()), 0};
         for (; stats.rounds < options.max_rounds; ++stats.rounds) {
             beat(pulse);
             const MeshView view{tri.store(), tri.points(), sizes, sources};
@@ -210,14 +185,8 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
                 if (to[v] != kNoIndex) (*sizes_out)[to[v]] = sizes[v];
         }
         stats.inserted = next - first_new;
-        if (far_base) {
-            // Every point of that mesh is in the result (the kernel never removes a point), the far
-            // field's right after the points there before refinement.
-            delaunay::TetStore& base = relax_base->tets;
-            for (index_t t = 0; t < base.size(); ++t)
-                for (int i = 0; i < 4; ++i) base.vertex(t)[i] = to[base.vertex(t)[i]];
-            relax_base->points = first_new + static_cast<index_t>(stats.far_field_first);
-        }
+        // The far field's points stay first among the new ones (the renumbering keeps the order).
+        if (relax_base) relax_base->in_place = static_cast<index_t>(stats.far_field_first);
     }
     stats.tets = domain.tets.size();
     stats.seconds = seconds_since(t0);

@@ -69,9 +69,8 @@ struct RefineStats {
 // The kernel inserts with par.parts parts, in the caller's oneTBB arena: the same input and part
 // count give the same mesh whatever the thread count.
 // With `relax_base` (the recovered tets, for the relaxation): when the far field went in first,
-// it becomes the mesh as it was right after that (ids as in the result), whose points, the far
-// field's included, the relaxation then keeps where they are: it moves and inserts again only
-// the points the advancing front placed.
+// its points (right after the points there before refinement) are marked to stay in place
+// (RecoveredTets::in_place).
 RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const Parallelism& par,
                             const RefineOptions& options = {}, std::vector<double>* sizes = nullptr,
                             const Pulse& pulse = {}, RecoveredTets* relax_base = nullptr);

@@ -642,6 +642,18 @@ TEST(ConstrainedKernel, FrontFacesSurvive) {
     EXPECT_NEAR(domain_volume(d), v0, 1e-12);
 }
 
+// A node of the body-centred cubic lattice with cube edge a (a corner at the origin), up to the
+// nodes' tiny offsets: a cube corner or a cube centre.
+bool is_lattice_node(const double* c, double a) {
+    bool corner = true, centre = true;
+    for (int k = 0; k < 3; ++k) {
+        const double u = c[k] / a;
+        corner = corner && std::abs(u - std::round(u)) < 1e-4;
+        centre = centre && std::abs(u - std::floor(u) - 0.5) < 1e-4;
+    }
+    return corner || centre;
+}
+
 // The far-field lattice: in a box whose front is at the far size everywhere, the new points at
 // least the clearance from the front are nodes of the body-centred cubic lattice (cube edge
 // spacing * S, a corner at the origin; up to their tiny offsets), and its tets raise the mean
@@ -661,16 +673,7 @@ TEST(FarLattice, FarPointsAreLatticeNodesAndRaiseTheMean) {
         const double a = 1.12 * cs.far_size();
         nodes = 0;
         inserted = static_cast<index_t>(s.inserted);
-        for (index_t p = first_new; p < d.point_count(); ++p) {
-            const double* c = d.point(p);
-            bool corner = true, centre = true;
-            for (int k = 0; k < 3; ++k) {
-                const double u = c[k] / a;
-                corner = corner && std::abs(u - std::round(u)) < 1e-4;
-                centre = centre && std::abs(u - std::floor(u) - 0.5) < 1e-4;
-            }
-            nodes += corner || centre;
-        }
+        for (index_t p = first_new; p < d.point_count(); ++p) nodes += is_lattice_node(d.point(p), a);
         mean_q = size_report(d, cs, o.reject_factor, first_new).mean_q;
     };
     index_t nodes = 0, inserted = 0, plain_nodes = 0, plain_inserted = 0;
@@ -711,13 +714,7 @@ TEST(FarLattice, FarFieldFirstInsertsTheNodesBeforeTheRounds) {
             const double a = o.lattice_spacing * cs.far_size();
             for (index_t p = first_new; p < first_new + s.far_field_first; ++p) {
                 const double* c = d.point(p);
-                bool corner = true, centre = true;
-                for (int k = 0; k < 3; ++k) {
-                    const double u = c[k] / a;
-                    corner = corner && std::abs(u - std::round(u)) < 1e-4;
-                    centre = centre && std::abs(u - std::floor(u) - 0.5) < 1e-4;
-                }
-                EXPECT_TRUE(corner || centre) << "point " << p;
+                EXPECT_TRUE(is_lattice_node(c, a)) << "point " << p;
                 double nearest = 1e300;
                 for (index_t f = 0; f < d.front_points; ++f) {
                     const double* q = d.point(f);

@@ -44,7 +44,10 @@ std::vector<SurfaceGroupGeometry> surface_group_geometry(const HybridMesh& mesh)
     for (std::size_t id = 0; id < g.size(); ++id) {
         if (g[id].area > 0) g[id].centroid = (1.0 / g[id].area) * moment[id];
         const double length = norm(normal_sum[id]);
-        if (length > 0) g[id].normal = (1.0 / length) * normal_sum[id];
+        // Divided, not multiplied by 1 / length: a group in an axis plane gets the unit axis
+        // exactly, whatever its triangles.
+        const Vec3& sum = normal_sum[id];
+        if (length > 0) g[id].normal = Vec3{sum.x / length, sum.y / length, sum.z / length};
         g[id].flat = g[id].faces > 0 && length > 0;
     }
     each_triangle(mesh, [&](index_t id, const Vec3& a, const Vec3& b, const Vec3& c) {

@@ -744,4 +744,26 @@ TEST(FarLattice, FarFieldFirstInsertsTheNodesBeforeTheRounds) {
                            c.tets.vertices().end()));
 }
 
+// The far field's nodes are only made when the box holds no more than the bound the caller
+// gives (the refinement passes 8 times the region's nodes): a box over a thin or slanted solid
+// is left to the advancing front.
+TEST(FarLattice, FarNodesOnlyWithinTheBound) {
+    std::vector<double> x, y, z;
+    box_surface(3.0, 3.0, 3.0, 0.125, x, y, z);
+    const TetDomain d = make_domain(x, y, z, delaunay::delaunay(x, y, z, Parallelism{1, 1}).tets);
+    ControlSpaceOptions co;
+    co.far_size = 0.25;
+    const ControlSpace cs(d, co);
+    const FarLattice lattice{1.12, 0.85};
+    const double lo[3] = {0, 0, 0}, hi[3] = {3, 3, 3};
+    const double a = 1.12 * 0.25;
+    const double box_nodes = std::pow(std::floor(3 / a) + 1, 3) + std::pow(std::floor(3 / a - 0.5) + 1, 3);
+    const std::vector<double> all = far_lattice_points(lo, hi, cs, lattice, box_nodes);
+    EXPECT_GT(all.size(), 0u);
+    EXPECT_LT(all.size() / 3, box_nodes);  // the ones near the faces are left out
+    EXPECT_TRUE(far_lattice_points(lo, hi, cs, lattice, box_nodes - 1).empty());
+    const double far_hi[3] = {3e20, 3, 3};
+    EXPECT_TRUE(far_lattice_points(lo, far_hi, cs, lattice, 1e300).empty()) << "node indices beyond exact integers";
+}
+
 }  // namespace

@@ -179,6 +179,7 @@ TetStepStats build_tets(HybridMesh& mesh, std::span<const index_t> front, index_
     stats.refine =
         refine_interior(domain, space, par, options.refine, options.relaxation.iterations > 0 ? &sizes : nullptr,
                         options.pulse, options.relaxation.iterations > 0 ? &recovered : nullptr);
+    control.reset();  // only the refinement asks the control space
     if (options.relaxation.iterations > 0) {
         stats.relaxation = relax_points(domain, std::move(recovered), sizes, par, options.relaxation, options.pulse);
         recovered = RecoveredTets();

@@ -87,14 +87,26 @@ Vec3 jittered(const Vec3& node, double a) {
 }  // namespace
 
 std::vector<double> far_lattice_points(const double* lo, const double* hi, const ControlSpace& space,
-                                       const FarLattice& lattice) {
+                                       const FarLattice& lattice, double max_nodes) {
     std::vector<double> out;
     const double far = space.far_size();
     if (!(lattice.spacing > 0) || !(far > 0)) return out;
     const double a = lattice.spacing * far;
+    // Counted in doubles first: the node indices must stay exact integers, and the count within
+    // max_nodes, before any is made.
+    double total_nodes = 0;
+    for (const double shift : {0.0, 0.5}) {
+        double nodes = 1;
+        for (int d = 0; d < 3; ++d) {
+            if (!(std::abs(lo[d] / a) < 0x1p50 && std::abs(hi[d] / a) < 0x1p50)) return out;
+            nodes *= std::max(0.0, std::floor(hi[d] / a - shift) - std::ceil(lo[d] / a - shift) + 1);
+        }
+        total_nodes += nodes;
+    }
+    if (!(total_nodes <= max_nodes)) return out;
     // Corners a*i and centres a*(i + 0.5) per axis, computed as nearest_bcc_node does, so that a
     // node a face proposes later is this very point. The nodes are only counted here and made
-    // where they are tested: a box much larger than the solid costs no node array.
+    // where they are tested.
     struct Grid {
         double shift;
         std::int64_t first[3], count[3];

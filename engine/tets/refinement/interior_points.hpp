@@ -85,9 +85,10 @@ struct FarLattice {
 // The far-field lattice's nodes in the box [lo, hi] where the lattice replaces ideal points (h
 // is S and no front node lies within the clearance: ControlSpace::far_and_clear), each with
 // its offset: the very points propose_points snaps to there. Nodes in a fixed order (x
-// fastest, corners before centres), 3 coordinates each; empty without the lattice. Parallel.
+// fastest, corners before centres), 3 coordinates each; empty without the lattice, and when the
+// box holds more than `max_nodes` nodes (each is tested against the front). Parallel.
 std::vector<double> far_lattice_points(const double* lo, const double* hi, const ControlSpace& space,
-                                       const FarLattice& lattice);
+                                       const FarLattice& lattice, double max_nodes);
 
 // The target size at p carried by the mesh points v[0..4) (a tet's corners near p): the control
 // space's graded minimum min(S, s_i + (g - 1) |p - x_i|) taken over the front nodes i that

@@ -80,8 +80,9 @@ std::uint64_t move_points(TetDomain& dom, index_t fixed, std::span<const double>
     return moves;
 }
 
-// Inserts the free points of `dom` again into a copy of the recovered mesh and makes the result
-// dom's tets. The points go in BRIO rounds (insertion_order.hpp), each along the Hilbert curve,
+// Inserts the free points of `dom` again into `recovered` (the recovered mesh or a copy of it)
+// and makes the result dom's tets, the far field's points (ids [fixed, fixed + in_place)) first
+// and then the others, each group in BRIO rounds (insertion_order.hpp), each along the Hilbert curve,
 // each walk from the previous insertion: in curve order alone every point's cavity took in again
 // the long tets that the points before it had joined to the far front (about 46 tets made per
 // point on the serpentine lift, 38 with rounds). A walk that runs into the front (a
@@ -115,8 +116,8 @@ index_t reinsert(TetDomain& dom, delaunay::TetStore&& recovered, index_t fixed, 
     const std::size_t still = static_cast<std::size_t>(
         std::lower_bound(used.begin(), used.end(), fixed + in_place) - used.begin());
     delaunay::InsertionOrder order;
-    for (const auto& [from, to] : {std::pair<std::size_t, std::size_t>{0, still}, {still, used.size()}}) {
-        const std::size_t m = to - from;
+    for (const auto& range : {std::pair<std::size_t, std::size_t>{0, still}, {still, used.size()}}) {
+        const std::size_t from = range.first, m = range.second - range.first;
         std::vector<double> x(m), y(m), z(m);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
             for (std::size_t i = r.begin(); i < r.end(); ++i) {

@@ -15,7 +15,9 @@
 //
 // Parallel and deterministic: every point's move is computed from the positions before the
 // round, and the insertion runs the Delaunay kernel with a fixed part count.
-// Points [0, recovered.points) (the front's and recovery's Steiner points) never move.
+// Points [0, recovered.points) (the front's and recovery's Steiner points) never move, nor do the
+// far field's [recovered.points, recovered.points + recovered.in_place), which the reinsertion puts
+// in first.
 #include <cstdint>
 #include <span>
 
@@ -27,9 +29,9 @@
 namespace tubemesh::tets {
 
 struct RelaxationOptions {
-    // Move rounds before the one reinsertion; 0 = none. Default 1: with the far field inserted
-    // first and kept in place, a second round raised the mean collapse by 0.0003 on average for
-    // a tenth more tet step (bench/results/tuning-notes.md).
+    // Move rounds before the reinsertion (one, unless reinsert_each_iteration); 0 = none.
+    // Default 1: with the far field inserted first and kept in place, a second round raised the
+    // mean collapse little for more time (bench/results/tuning-notes.md).
     int iterations = 1;
     // Insert the points again after every iteration instead of after the last one only. Off by
     // default: each insertion rebuilds all the interior tets, the largest cost of the relaxation,

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "engine/core/timing.hpp"
+#include "engine/core/vec3_ops.hpp"
 #include "engine/delaunay/insertion_order.hpp"
 #include "engine/delaunay/triangulation.hpp"
 #include "engine/sizing/control_space.hpp"
@@ -31,7 +32,21 @@ std::uint64_t insert_far_field(delaunay::Triangulation& tri, GrowingPoints& live
             lo[d] = std::min(lo[d], pts[3 * i + d]);
             hi[d] = std::max(hi[d], pts[3 * i + d]);
         }
-    const std::vector<double> nodes = far_lattice_points(lo, hi, space, lattice);
+    // The region's volume, summed in tet order (the decision below must not depend on threads):
+    // a box with more than 8 times the region's nodes (a thin or slanted solid) is left to the
+    // advancing front, which never proposes a node outside the region.
+    double volume = 0;
+    const delaunay::TetStore& tets = tri.store();
+    for (index_t t = 0; t < tets.size(); ++t) {
+        const index_t* v = tets.vertex(t);
+        if (v[0] == delaunay::kFreeSlot) continue;
+        const auto at = [&](index_t i) { return Vec3{pts[3 * std::size_t{i}], pts[3 * std::size_t{i} + 1], pts[3 * std::size_t{i} + 2]}; };
+        const Vec3 o = at(v[0]);
+        volume += std::abs(dot(at(v[1]) - o, cross(at(v[2]) - o, at(v[3]) - o))) / 6.0;
+    }
+    const double a = lattice.spacing * space.far_size();
+    const double region_nodes = a > 0 ? 2 * volume / (a * a * a) : 0;
+    const std::vector<double> nodes = far_lattice_points(lo, hi, space, lattice, 8 * region_nodes + 1024);
     beat(pulse);
     const std::size_t m = nodes.size() / 3;
     if (m == 0) return 0;
@@ -186,7 +201,11 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
         }
         stats.inserted = next - first_new;
         // The far field's points stay first among the new ones (the renumbering keeps the order).
-        if (relax_base) relax_base->in_place = static_cast<index_t>(stats.far_field_first);
+        if (relax_base) {
+            if (relax_base->points != first_new)
+                throw Error("refinement: the relaxation's mesh is not the one refinement started from");
+            relax_base->in_place = static_cast<index_t>(stats.far_field_first);
+        }
     }
     stats.tets = domain.tets.size();
     stats.seconds = seconds_since(t0);

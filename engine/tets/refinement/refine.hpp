@@ -31,8 +31,9 @@ struct RefineOptions {
     // Insert the far-field lattice's nodes (FarLattice) all at once, in BRIO rounds, before the
     // first round: the advancing front then fills only the graded layers between the front and
     // the far field, in few rounds, and its cavities no longer reach across the unrefined core.
-    // The same nodes the faces would snap to one layer at a time (on the dam block at S 0.3
-    // they are most of the points); no effect without the lattice. Default on.
+    // The same nodes the faces would snap to one layer at a time; no effect without the
+    // lattice, or when the region fills less than an eighth of its bounding box (the nodes
+    // outside it would each cost a walk). Default on.
     bool far_field_first = true;
     // Kernel passes with fewer points per part run serially; 256.
     index_t min_points_per_part = 256;
@@ -49,7 +50,8 @@ struct RefineStats {
     std::uint64_t rejected_close = 0;     // too close to a point or an accepted candidate
     std::uint64_t inserted = 0;           // new points in the mesh
     std::uint64_t far_field_first = 0;    // of which inserted before the first round (far_field_first)
-    std::uint64_t blocked = 0;            // skipped by the kernel (cavity would lose the point's tet)
+    std::uint64_t blocked = 0;            // skipped by the kernel (cavity would lose the point's tet,
+                                          // or a far-field node outside the region)
     std::uint64_t duplicates = 0;
     std::uint64_t shrunk_cavities = 0;    // cavities made star-shaped by shrinking
     std::uint64_t kernel_conflicts = 0;   // kernel insertions postponed between parts

@@ -92,33 +92,29 @@ std::vector<double> far_lattice_points(const double* lo, const double* hi, const
     const double far = space.far_size();
     if (!(lattice.spacing > 0) || !(far > 0)) return out;
     const double a = lattice.spacing * far;
-    // Counted in doubles first: the node indices must stay exact integers, and the count within
-    // max_nodes, before any is made.
-    double total_nodes = 0;
-    for (const double shift : {0.0, 0.5}) {
-        double nodes = 1;
-        for (int d = 0; d < 3; ++d) {
-            if (!(std::abs(lo[d] / a) < 0x1p50 && std::abs(hi[d] / a) < 0x1p50)) return out;
-            nodes *= std::max(0.0, std::floor(hi[d] / a - shift) - std::ceil(lo[d] / a - shift) + 1);
-        }
-        total_nodes += nodes;
-    }
-    if (!(total_nodes <= max_nodes)) return out;
     // Corners a*i and centres a*(i + 0.5) per axis, computed as nearest_bcc_node does, so that a
     // node a face proposes later is this very point. The nodes are only counted here and made
-    // where they are tested.
+    // where they are tested; the indices must stay exact integers, and the count within
+    // max_nodes, before any is made.
     struct Grid {
         double shift;
         std::int64_t first[3], count[3];
         std::size_t size() const { return std::size_t(count[0]) * std::size_t(count[1]) * std::size_t(count[2]); }
     };
     Grid grid[2] = {{0.0, {}, {}}, {0.5, {}, {}}};
-    for (Grid& g : grid)
+    double total_nodes = 0;
+    for (Grid& g : grid) {
+        double nodes = 1;
         for (int d = 0; d < 3; ++d) {
-            g.first[d] = static_cast<std::int64_t>(std::ceil(lo[d] / a - g.shift));
-            g.count[d] =
-                std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(hi[d] / a - g.shift)) - g.first[d] + 1);
+            if (!(std::abs(lo[d] / a) < 0x1p50 && std::abs(hi[d] / a) < 0x1p50)) return out;
+            const double first = std::ceil(lo[d] / a - g.shift), count = std::max(0.0, std::floor(hi[d] / a - g.shift) - first + 1);
+            g.first[d] = static_cast<std::int64_t>(first);
+            g.count[d] = static_cast<std::int64_t>(count);
+            nodes *= count;
         }
+        total_nodes += nodes;
+    }
+    if (!(total_nodes <= max_nodes)) return out;
     const auto node = [&](std::size_t n) {
         const Grid& g = n < grid[0].size() ? grid[0] : grid[1];
         if (n >= grid[0].size()) n -= grid[0].size();

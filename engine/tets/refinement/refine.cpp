@@ -14,6 +14,16 @@
 namespace tubemesh::tets {
 namespace {
 
+// Which of the points base, base + 1, ... (count of them) the kernel skipped in the insert() calls
+// since it listed `blocked_before` blocked points and `dup_before` duplicates.
+std::vector<std::uint8_t> skipped_points(const delaunay::Triangulation& tri, index_t base, std::size_t count,
+                                         std::size_t blocked_before, std::size_t dup_before) {
+    std::vector<std::uint8_t> dead(count, 0);
+    for (std::size_t k = blocked_before; k < tri.blocked().size(); ++k) dead[tri.blocked()[k] - base] = 1;
+    for (std::size_t k = dup_before; k < tri.duplicates().size(); ++k) dead[tri.duplicates()[k].first - base] = 1;
+    return dead;
+}
+
 // The far field's lattice nodes inserted at once (RefineOptions::far_field_first), in BRIO
 // rounds so that the first cavities, which reach across the unrefined core, are few. Their h is
 // the far size; nodes outside the region or behind a concave part of the front are skipped by
@@ -41,8 +51,7 @@ std::uint64_t insert_far_field(delaunay::Triangulation& tri, GrowingPoints& live
         const index_t* v = tets.vertex(t);
         if (v[0] == delaunay::kFreeSlot) continue;
         const auto at = [&](index_t i) { return Vec3{pts[3 * std::size_t{i}], pts[3 * std::size_t{i} + 1], pts[3 * std::size_t{i} + 2]}; };
-        const Vec3 o = at(v[0]);
-        volume += std::abs(dot(at(v[1]) - o, cross(at(v[2]) - o, at(v[3]) - o))) / 6.0;
+        volume += std::abs(tet_volume(at(v[0]), at(v[1]), at(v[2]), at(v[3])));
     }
     const double a = lattice.spacing * space.far_size();
     const double region_nodes = a > 0 ? 2 * volume / (a * a * a) : 0;
@@ -79,9 +88,7 @@ std::uint64_t insert_far_field(delaunay::Triangulation& tri, GrowingPoints& live
         beat(pulse);
         if (options.round_done) options.round_done(tri.live_tets());
     }
-    std::vector<std::uint8_t> dead(m, 0);
-    for (std::size_t k = blocked_before; k < tri.blocked().size(); ++k) dead[tri.blocked()[k] - base] = 1;
-    for (std::size_t k = dup_before; k < tri.duplicates().size(); ++k) dead[tri.duplicates()[k].first - base] = 1;
+    const std::vector<std::uint8_t> dead = skipped_points(tri, base, m, blocked_before, dup_before);
     std::vector<double> in;
     in.reserve(xyz.size());
     for (std::size_t k = 0; k < m; ++k)
@@ -167,9 +174,7 @@ RefineStats refine_interior(TetDomain& domain, const ControlSpace& space, const 
             const std::size_t blocked_before = tri.blocked().size(), dup_before = tri.duplicates().size();
             tri.insert(ids, parts, options.min_points_per_part);
             // Only inserted points count as existing for the next round's distance test.
-            std::vector<std::uint8_t> dead(ids.size(), 0);
-            for (std::size_t k = blocked_before; k < tri.blocked().size(); ++k) dead[tri.blocked()[k] - base] = 1;
-            for (std::size_t k = dup_before; k < tri.duplicates().size(); ++k) dead[tri.duplicates()[k].first - base] = 1;
+            const std::vector<std::uint8_t> dead = skipped_points(tri, base, ids.size(), blocked_before, dup_before);
             std::size_t added = 0;
             for (std::size_t i = 0; i < ids.size(); ++i)
                 if (!dead[i]) {

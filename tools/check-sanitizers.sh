@@ -12,20 +12,21 @@ cd "$(dirname "$0")/.."
 which=${1:-all}
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 
-# The engine's unit suites: seconds each in a Release build, no OpenCASCADE.
-asan_tests=(test_mesh_store test_quality test_sweep test_mesh_check test_mesh_io test_pyramids test_delaunay
-            test_surface test_predicates test_tets_optimise test_tets_ring_triangulation test_tets_recovery
-            test_tets_refine test_tets_relaxation)
+# The engine's unit suites: seconds each in a Release build, no OpenCASCADE. Longest under ASan first,
+# so that the queue ends on short shards.
+asan_tests=(test_predicates test_delaunay test_sweep test_tets_optimise test_tets_recovery test_mesh_io test_surface
+            test_tets_refine test_tets_relaxation test_mesh_store test_quality test_pyramids test_mesh_check
+            test_tets_ring_triangulation)
 # The kernels that run in parallel: Delaunay passes, tet refinement and relaxation, recovery,
 # the sweep (its determinism tests run it on several threads), the pyramid batches.
 tsan_tests=(test_delaunay test_tets_refine test_tets_relaxation test_tets_recovery test_sweep test_pyramids)
 
-run_one() {  # preset, test: one suite, its output kept in a log
-  local log=build/$1/sanitizer-$2.txt
-  if build/"$1"/tests/"$2" --gtest_brief=1 >"$log" 2>&1; then
-    echo "$1 $2: clean"
+run_one() {  # preset, suite, shard: one gtest shard of a suite, its output kept in a log
+  local log=build/$1/sanitizer-$2-$3.txt
+  if GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$3 build/"$1"/tests/"$2" --gtest_brief=1 >"$log" 2>&1; then
+    echo "$1 $2 shard $3: clean"
   else
-    echo "$1 $2: FAILED, see $log" >&2
+    echo "$1 $2 shard $3: FAILED, see $log" >&2
     return 1
   fi
 }
@@ -36,7 +37,12 @@ run_suite() {  # preset, tests...: built (a no-op when tools/test.sh built them)
   shift
   [[ -f build/$preset/build.ninja ]] || cmake --preset "$preset" >/dev/null
   cmake --build --preset "$preset" -j "$(nproc)" --target "$@" >/dev/null
-  printf '%s\n' "$@" | xargs -P "$(nproc)" -I{} bash -c 'run_one "$0" "$1"' "$preset" {}
+  # Every suite in one shard per core, all shards in one queue: the longest suite (the predicates'
+  # exact-arithmetic comparisons, minutes under ASan) no longer runs alone on one core at the end.
+  export shards=$(nproc)
+  local t k
+  for t in "$@"; do for ((k = 0; k < shards; ++k)); do echo "$t $k"; done; done |
+    xargs -P "$shards" -L 1 bash -c 'run_one "$0" "$1" "$2"' "$preset"
 }
 
 status=0

@@ -48,7 +48,11 @@ for h in "${harnesses[@]}"; do
   pids+=($!)
 done
 for k in "${!harnesses[@]}"; do
-  wait "${pids[$k]}" || status=1
-  cat build/sanitize/report-"${harnesses[$k]}".txt
+  if wait "${pids[$k]}"; then
+    cat build/sanitize/report-"${harnesses[$k]}".txt
+  else
+    status=1
+    cat build/sanitize/report-"${harnesses[$k]}".txt >&2
+  fi
 done
 exit $status
